@@ -1,0 +1,157 @@
+#include "bench_command.h"
+
+#include <omp.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "cardiac/heart_simulation.h"
+#include "exit_codes.h"
+#include "io/scenario_file.h"
+
+namespace hs::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct BenchCase {
+  std::string name;
+  std::string description;
+  // Builds the workload; returns a function that advances one step, and the particle count.
+  std::function<nlohmann::json(int threads, double seconds)> run;
+};
+
+// Steps a simulation for at least `seconds` after a warm-up and reports throughput.
+template <class Sim>
+nlohmann::json measure(Sim& sim, std::size_t particles, int threads, double seconds) {
+  for (int i = 0; i < 50; ++i) sim.step();  // warm-up: caches, first-touch, lazy allocation
+  long steps = 0;
+  const auto start = Clock::now();
+  double elapsed = 0;
+  while (elapsed < seconds || steps < 100) {
+    for (int i = 0; i < 50; ++i) sim.step();
+    steps += 50;
+    elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+  }
+  const double stepsPerSecond = double(steps) / elapsed;
+  return {{"steps_per_s", stepsPerSecond},
+          {"ns_per_particle_step", 1e9 / (stepsPerSecond * double(particles))},
+          {"particles", particles},
+          {"threads", threads},
+          {"iterations", steps},
+          {"seconds", elapsed}};
+}
+
+std::vector<BenchCase> allCases() {
+  return {
+      {"tissue-lv", "heart-only scenario: default LV beating in thesis mode, no blood",
+       [](int threads, double seconds) {
+         cardiac::Scenario scenario = io::loadScenario("heart-only");
+         cardiac::HeartSimulation sim(scenario, threads);
+         nlohmann::json r = measure(sim, sim.particles().size(), threads, seconds);
+         r["solver_iterations"] = scenario.simulation.iterations;
+         r["tets"] = sim.model().mesh.tets.size();
+         return r;
+       }},
+  };
+}
+
+double peakRssMb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+// Runs one case in a forked child; the child writes its JSON result to a pipe.
+nlohmann::json runIsolated(const BenchCase& c, int threads, double seconds) {
+  int fds[2];
+  if (pipe(fds) != 0) throw std::runtime_error("bench: pipe failed");
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("bench: fork failed");
+  if (pid == 0) {
+    close(fds[0]);
+    nlohmann::json r = c.run(threads, seconds);
+    r["name"] = c.name;
+    r["description"] = c.description;
+    r["peak_rss_mb"] = peakRssMb();
+    const std::string text = r.dump();
+    const ssize_t written = write(fds[1], text.data(), text.size());
+    close(fds[1]);
+    _exit(written == static_cast<ssize_t>(text.size()) ? 0 : 1);
+  }
+  close(fds[1]);
+  std::string text;
+  char buffer[4096];
+  ssize_t n;
+  while ((n = read(fds[0], buffer, sizeof buffer)) > 0) text.append(buffer, static_cast<std::size_t>(n));
+  close(fds[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || text.empty())
+    throw std::runtime_error("bench: case '" + c.name + "' failed");
+  nlohmann::ordered_json ordered;
+  const nlohmann::json parsed = nlohmann::json::parse(text);
+  for (const char* key : {"name", "steps_per_s", "ns_per_particle_step", "particles", "threads", "iterations",
+                          "peak_rss_mb", "seconds"})
+    ordered[key] = parsed.at(key);
+  for (const auto& [key, value] : parsed.items())
+    if (!ordered.contains(key)) ordered[key] = value;
+  return ordered;
+}
+
+}  // namespace
+
+std::vector<std::string> benchCaseNames() {
+  std::vector<std::string> names;
+  for (const BenchCase& c : allCases()) names.push_back(c.name);
+  return names;
+}
+
+int benchCommand(const BenchOptions& options) {
+  const std::vector<BenchCase> cases = allCases();
+  std::vector<const BenchCase*> chosen;
+  for (const std::string& name : options.cases) {
+    const BenchCase* found = nullptr;
+    for (const BenchCase& c : cases)
+      if (c.name == name) found = &c;
+    if (!found) {
+      std::string known;
+      for (const BenchCase& c : cases) known += (known.empty() ? "" : ", ") + c.name;
+      std::cerr << "heartsim: error: --case " << name << ": unknown bench case (known: " << known << ")\n";
+      return kExitBadInput;
+    }
+    chosen.push_back(found);
+  }
+  if (chosen.empty())
+    for (const BenchCase& c : cases) chosen.push_back(&c);
+  const int threads = options.threads > 0 ? options.threads : omp_get_num_procs();
+
+  nlohmann::ordered_json report;
+  report["cases"] = nlohmann::json::array();
+  for (const BenchCase* c : chosen) {
+    std::cerr << "heartsim bench: " << c->name << " (" << threads << " threads)...\n";
+    nlohmann::ordered_json r;
+    try {
+      r = runIsolated(*c, threads, options.seconds);
+    } catch (const std::exception& e) {
+      std::cerr << "heartsim: error: " << e.what() << '\n';
+      return kExitFailure;
+    }
+    if (!options.json) {
+      std::printf("%-24s %12.1f steps/s %10.1f ns/particle-step %8zu particles %2d threads %8.1f MB peak\n",
+                  c->name.c_str(), r["steps_per_s"].get<double>(), r["ns_per_particle_step"].get<double>(),
+                  r["particles"].get<std::size_t>(), threads, r["peak_rss_mb"].get<double>());
+    }
+    report["cases"].push_back(r);
+  }
+  if (options.json) std::cout << report.dump() << std::endl;
+  return kExitOk;
+}
+
+}  // namespace hs::app

@@ -1,0 +1,54 @@
+// heartsim: the command-line entry point. Subcommands: run, bench.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "bench_command.h"
+#include "exit_codes.h"
+#include "run_command.h"
+#include "version.h"
+
+int main(int argc, char** argv) {
+  using namespace hs::app;
+  CLI::App app{"heartsim: an interactive simulator of the heart's left ventricle and its blood flow"};
+  app.set_version_flag("--version", std::string("heartsim ") + HS_VERSION + " (git " + HS_GIT_REVISION + ")");
+  app.require_subcommand(1);
+
+  RunOptions run;
+  double duration = -1;
+  CLI::App* runApp = app.add_subcommand("run", "Run a scenario headless and write its results");
+  runApp->add_option("scenario", run.scenario, "Built-in scenario name or path to a .toml file")->required();
+  runApp->add_option("--duration", duration, "Simulated time (s), overrides simulation.duration");
+  runApp->add_option("--threads", run.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  runApp->add_option("--out", run.outDir, "Output directory (default: results/<scenario>)");
+  runApp->add_flag("--json", run.json, "Print one JSON summary object on stdout");
+  runApp->add_flag("--vtk", run.vtk, "Write VTK frames and a .pvd series for ParaView");
+  runApp->add_option("--set", run.overrides, "Override a scenario key: --set cycle.beats=2 (repeatable)")
+      ->take_all()
+      ->expected(1);
+
+  BenchOptions bench;
+  CLI::App* benchApp = app.add_subcommand("bench", "End-to-end throughput benchmarks");
+  benchApp->add_option("--case", bench.cases, "Case to run (repeatable; default: all)")->expected(1)->take_all();
+  benchApp->add_option("--threads", bench.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  benchApp->add_option("--seconds", bench.seconds, "Measuring time per case (s)")->check(CLI::Range(0.1, 600.0));
+  benchApp->add_flag("--json", bench.json, "Print one JSON object on stdout");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "heartsim: error: " << e.what() << " (see heartsim --help)\n";
+    return kExitBadInput;
+  }
+  if (runApp->parsed()) {
+    if (runApp->count("--duration") > 0) run.duration = duration;
+    return runCommand(run);
+  }
+  if (benchApp->parsed()) return benchCommand(bench);
+  return kExitBadInput;
+}

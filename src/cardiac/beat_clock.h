@@ -1,0 +1,73 @@
+#pragma once
+// Timing of one beating region: when it contracts and by how much per step.
+//
+// Thesis mode (Algorithms 2-3, Fig. 4.6, Table 5.4): a Systole/Diastole state machine counting
+// steps. In systole the region moves BEATING_DISPLACE toward the centre every step; after
+// BEATING_DURATION steps the state switches. Algorithm 2 as printed counts steps only in
+// systole (so diastole would never end); Fig. 4.6 switches both ways after BEATING_DURATION,
+// which we follow (docs/cardiac-cycle.md).
+// Physiological mode: heart rate (bpm) and systolic fraction; the inward displacement per
+// systole follows F(s) = s - sin(2 pi s)/(2 pi), s = time in systole / systole length, whose
+// rate sin^2(pi s) starts and ends at zero: smooth in time.
+#include <cstdint>
+#include <random>
+
+#include "pbd/types.h"
+
+namespace hs::cardiac {
+
+using pbd::Real;
+
+enum class Phase : std::uint8_t { Systole = 0, Diastole = 1, Rest = 2 };
+
+const char* phaseName(Phase phase);
+
+struct BeatClockSettings {
+  bool physiological = false;
+  // Thesis mode.
+  int systoleSteps = 8;         // BEATING_DURATION
+  int diastoleSteps = 8;        // BEATING_DURATION (Fig. 4.6)
+  Real displacePerStep = Real(0.08);  // BEATING_DISPLACE (m)
+  // Physiological mode.
+  Real period = Real(60.0 / 72.0);  // s
+  Real systolicFraction = Real(0.35);
+  Real contraction = Real(0.3);  // m per systole
+  // Both.
+  int beats = 0;          // systoles to perform, then rest; 0 = no limit
+  Real irregularity = 0;  // each diastole shortened by a random share in [0, irregularity)
+  unsigned seed = 1;
+};
+
+class BeatClock {
+ public:
+  BeatClock(const BeatClockSettings& settings, Real dt);
+
+  // Advances one step; returns the inward displacement (m) to apply during this step.
+  Real advance();
+  // Phase offset: the first systole starts only after `steps` relaxed steps.
+  void delayStart(int steps);
+
+  [[nodiscard]] Phase phase() const { return m_phase; }
+  [[nodiscard]] int stepsInPhase() const { return m_steps; }
+  [[nodiscard]] int systolesCompleted() const { return m_systolesCompleted; }
+  // Length (steps) of the diastole in progress or to come.
+  [[nodiscard]] int diastoleLength() const { return m_diastoleLength; }
+
+ private:
+  Real advanceThesis();
+  Real advancePhysiological();
+  void enterDiastole();
+  void endDiastole();
+
+  BeatClockSettings m_settings;
+  Real m_dt;
+  Phase m_phase = Phase::Systole;
+  int m_steps = 0;  // steps spent in the current phase
+  int m_systolesCompleted = 0;
+  int m_systoleLength = 0;  // steps
+  int m_diastoleLength = 0;
+  int m_nominalDiastoleLength = 0;
+  std::mt19937 m_random;
+};
+
+}  // namespace hs::cardiac

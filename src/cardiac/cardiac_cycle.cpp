@@ -1,0 +1,128 @@
+#include "cardiac/cardiac_cycle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace hs::cardiac {
+
+std::vector<Index> selectBeatingVertices(const CycleSettings& cycle, const LvModel& model) {
+  const std::size_t n = model.mesh.vertices.size();
+  std::vector<bool> chosen(n, false);
+  const bool anySelection = !cycle.segments.empty() || !cycle.vertices.empty() || cycle.sphereEnabled;
+  for (std::size_t v = 0; v < n; ++v) {
+    const int segment = model.segment[v];
+    if (!anySelection) {
+      chosen[v] = model.region[v] == Region::Myocardium;
+      continue;
+    }
+    if (std::find(cycle.segments.begin(), cycle.segments.end(), segment) != cycle.segments.end())
+      chosen[v] = true;
+    if (cycle.sphereEnabled &&
+        (model.mesh.vertices[v] - cycle.sphereCentre).norm() <= cycle.sphereRadius)
+      chosen[v] = true;
+  }
+  for (Index id : cycle.vertices) {
+    if (id >= n) {
+      throw std::invalid_argument("cycle.vertices: vertex id " + std::to_string(id) +
+                                  " is out of range (the model has " + std::to_string(n) +
+                                  " vertices, ids 0.." + std::to_string(n - 1) + ")");
+    }
+    chosen[id] = true;
+  }
+  std::vector<Index> out;
+  for (std::size_t v = 0; v < n; ++v)
+    if (chosen[v]) out.push_back(static_cast<Index>(v));
+  return out;
+}
+
+void moveTowardCentre(std::vector<Vec3>& positions, std::vector<Vec3>& predicted,
+                      const std::vector<Index>& particles, const Vec3& centre, Real displacement) {
+  if (displacement == Real(0)) return;
+  for (Index i : particles) {
+    const Vec3 toCentre = centre - predicted[i];
+    const Real distance = toCentre.norm();
+    if (distance <= Real(0)) continue;
+    const Vec3 move = (std::min(displacement, distance) / distance) * toCentre;
+    predicted[i] += move;
+    positions[i] += move;
+  }
+}
+
+namespace {
+
+BeatClockSettings clockSettings(const CycleSettings& cycle) {
+  BeatClockSettings s;
+  s.physiological = cycle.mode == TimingMode::Physiological;
+  s.systoleSteps = cycle.beatingDuration;
+  s.diastoleSteps = cycle.beatingDuration;
+  s.displacePerStep = cycle.beatingDisplace;
+  s.period = Real(60) / cycle.heartRateBpm;
+  s.systolicFraction = cycle.systolicFraction;
+  s.contraction = cycle.contraction;
+  s.beats = cycle.beats;
+  s.seed = cycle.seed;
+  s.irregularity = cycle.pattern == BeatPattern::Irregular ? cycle.irregularity : Real(0);
+  return s;
+}
+
+std::vector<Index> toParticles(const std::vector<Index>& vertices, Index first) {
+  std::vector<Index> out(vertices);
+  for (Index& v : out) v += first;
+  return out;
+}
+
+}  // namespace
+
+CardiacCycle::CardiacCycle(const CycleSettings& cycle, const LvModel& model, Index firstParticle,
+                           Real dt)
+    : m_centre(model.centre) {
+  if (!cycle.enabled) return;
+  std::vector<Index> beating = selectBeatingVertices(cycle, model);
+  const BeatClockSettings main = clockSettings(cycle);
+  if (cycle.pattern != BeatPattern::Inconsistent) {
+    m_regions.push_back({toParticles(beating, firstParticle), BeatClock(main, dt)});
+    return;
+  }
+  // Inconsistent: the listed segments leave the main region and get their own clock, with
+  // rate scaled by rateFactor (same contraction per beat) and started phaseOffset later.
+  std::vector<Index> mainPart;
+  std::vector<Index> offPart;
+  for (Index v : beating) {
+    const int segment = model.segment[v];
+    const bool off = std::find(cycle.inconsistentSegments.begin(), cycle.inconsistentSegments.end(),
+                               segment) != cycle.inconsistentSegments.end();
+    (off ? offPart : mainPart).push_back(v);
+  }
+  BeatClockSettings other = main;
+  const Real rate = cycle.inconsistentRateFactor;
+  other.period = main.period / rate;
+  other.systoleSteps = std::max(1, int(std::lround(double(main.systoleSteps) / double(rate))));
+  other.diastoleSteps = other.systoleSteps;
+  other.displacePerStep =
+      main.displacePerStep * Real(main.systoleSteps) / Real(other.systoleSteps);
+  other.beats = main.beats > 0 ? std::max(1, int(std::lround(main.beats * double(rate)))) : 0;
+  BeatClock offClock(other, dt);
+  const double cycleSteps = main.physiological ? double(other.period) / double(dt)
+                                               : double(other.systoleSteps + other.diastoleSteps);
+  offClock.delayStart(int(std::lround(cycleSteps * double(cycle.inconsistentPhaseOffset))));
+  m_regions.push_back({toParticles(mainPart, firstParticle), BeatClock(main, dt)});
+  m_regions.push_back({toParticles(offPart, firstParticle), offClock});
+}
+
+void CardiacCycle::apply(std::vector<Vec3>& positions, std::vector<Vec3>& predicted) {
+  for (BeatingRegion& region : m_regions) {
+    moveTowardCentre(positions, predicted, region.particles, m_centre, region.clock.advance());
+  }
+}
+
+Phase CardiacCycle::phase() const {
+  return m_regions.empty() ? Phase::Rest : m_regions.front().clock.phase();
+}
+
+int CardiacCycle::beatsCompleted() const {
+  return m_regions.empty() ? 0 : m_regions.front().clock.systolesCompleted();
+}
+
+}  // namespace hs::cardiac

@@ -1,0 +1,49 @@
+#pragma once
+// The cardiac cycle acting on the wall (thesis 4.3): beating regions, each with its own
+// BeatClock, move their vertices toward the heart centre during systole (Algorithm 3) and
+// are released in diastole so the wall constraints restore the rest shape.
+// Patterns: normal (one region, regular), irregular (diastoles cut short at random) and
+// inconsistent (some segments beat with another rate and phase than the rest).
+#include <vector>
+
+#include "cardiac/beat_clock.h"
+#include "cardiac/lv_model.h"
+#include "cardiac/scenario.h"
+
+namespace hs::cardiac {
+
+struct BeatingRegion {
+  std::vector<Index> particles;  // particle ids (model vertex + first particle)
+  BeatClock clock;
+};
+
+// Model vertices chosen to beat: the union of segments, vertex ids and sphere; all myocardium
+// when none is given. Throws std::invalid_argument naming the key for out-of-range ids.
+std::vector<Index> selectBeatingVertices(const CycleSettings& cycle, const LvModel& model);
+
+// Algorithm 3: moves each particle toward `centre` by `displacement`, never past it. The
+// move is kinematic: the start-of-step position x and the prediction p shift together, so it
+// changes where the wall is but adds no momentum (v = (p - x)/dt is unchanged). Moving p
+// alone would turn every systolic step into velocity and the wall would accelerate inward
+// step after step (see docs/cardiac-cycle.md).
+void moveTowardCentre(std::vector<Vec3>& positions, std::vector<Vec3>& predicted,
+                      const std::vector<Index>& particles, const Vec3& centre, Real displacement);
+
+class CardiacCycle {
+ public:
+  CardiacCycle(const CycleSettings& cycle, const LvModel& model, Index firstParticle, Real dt);
+
+  // Moves the beating particles for this step (after prediction) and advances the clocks.
+  void apply(std::vector<Vec3>& positions, std::vector<Vec3>& predicted);
+
+  [[nodiscard]] Phase phase() const;  // of the first (main) region
+  [[nodiscard]] int beatsCompleted() const;  // systoles completed by the main region
+  [[nodiscard]] const std::vector<BeatingRegion>& regions() const { return m_regions; }
+  [[nodiscard]] const Vec3& centre() const { return m_centre; }
+
+ private:
+  std::vector<BeatingRegion> m_regions;
+  Vec3 m_centre;
+};
+
+}  // namespace hs::cardiac

@@ -1,0 +1,60 @@
+#pragma once
+// The beating heart wall: the LV model as a PBD soft body driven by the cardiac cycle.
+// One step follows thesis Fig. 4.1 / Algorithm 1: external forces and prediction, then the
+// cardiac cycle moves the beating vertices, then the constraints are projected, then
+// velocities are updated. Blood joins this class in a later stage.
+#include <cstdint>
+#include <vector>
+
+#include "cardiac/cardiac_cycle.h"
+#include "cardiac/lv_model.h"
+#include "cardiac/scenario.h"
+#include "pbd/solver.h"
+
+namespace hs::cardiac {
+
+struct TissueStats {
+  Real volumeErrorMax = 0;   // max over tets of |V - V0| / V0
+  Real volumeErrorMean = 0;  // mean over tets of |V - V0| / V0
+  std::size_t invertedTets = 0;  // tets with V <= 0
+  Index firstInvertedTet = 0;    // model tet id, when invertedTets > 0
+  bool finite = true;        // every position and velocity finite
+  Index firstNonFinite = 0;  // particle id, when !finite
+};
+
+class HeartSimulation {
+ public:
+  // Throws std::invalid_argument for parameters the model or cycle reject.
+  HeartSimulation(const Scenario& scenario, int threads);
+
+  void step();
+
+  [[nodiscard]] const Scenario& scenario() const { return m_scenario; }
+  [[nodiscard]] const LvModel& model() const { return m_model; }
+  [[nodiscard]] const pbd::Particles& particles() const { return m_particles; }
+  [[nodiscard]] const pbd::ConstraintSet& constraints() const { return m_constraints; }
+  [[nodiscard]] const CardiacCycle& cycle() const { return m_cycle; }
+  [[nodiscard]] double time() const { return double(m_steps) * double(m_solver.dt); }
+  [[nodiscard]] std::int64_t stepCount() const { return m_steps; }
+  // Phase during the last step (what the wall was doing), Systole before the first.
+  [[nodiscard]] Phase lastPhase() const { return m_lastPhase; }
+
+  [[nodiscard]] Real cavityVolume() const;
+  [[nodiscard]] TissueStats tissueStats() const;
+  // Largest vertex distance from its rest position, divided by the LV long axis.
+  [[nodiscard]] Real restDeviationRelative() const;
+
+ private:
+  Scenario m_scenario;
+  LvModel m_model;
+  pbd::Particles m_particles;
+  pbd::ConstraintSet m_constraints;
+  pbd::SolverSettings m_solver;
+  Index m_firstWallParticle = 0;
+  CardiacCycle m_cycle;
+  std::vector<Real> m_restVolume;  // per model tet
+  std::int64_t m_steps = 0;
+  Phase m_lastPhase = Phase::Systole;
+};
+
+}  // namespace hs::cardiac

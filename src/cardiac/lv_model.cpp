@@ -1,0 +1,181 @@
+#include "cardiac/lv_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "cardiac/aha_segments.h"
+#include "cardiac/lv_mid_surface.h"
+
+namespace hs::cardiac {
+
+namespace {
+
+using detail::Vec3d;
+
+// Element edge length at resolution 1 relative to the endocardial radius a, chosen so the
+// default model has about as many vertices as the thesis model (1,061): h = 0.21 a / resolution
+// (a uniformly scaled model keeps its mesh).
+constexpr double kEdgePerRadius = 0.21;
+constexpr double kMinResolution = 0.25;
+constexpr double kMaxResolution = 8.0;
+// The gap between the orifices and between each orifice and the rim, in units of the vessel
+// wall thickness: the outer walls must leave at least one wall thickness of plate between them.
+constexpr double kMinGapInWalls = 3.0;
+
+std::string fmt(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+[[noreturn]] void fail(const std::string& key, const std::string& what) {
+  throw std::invalid_argument("model." + key + ": " + what);
+}
+
+void validate(const LvGeometryParams& p) {
+  const std::pair<const char*, Real> positive[] = {{"endo_radius", p.endoRadius},
+                                                   {"endo_long_axis", p.endoLongAxis},
+                                                   {"wall_thickness", p.wallThickness},
+                                                   {"base_thickness", p.baseThickness},
+                                                   {"mitral_radius", p.mitralRadius},
+                                                   {"aortic_radius", p.aorticRadius},
+                                                   {"vessel_wall_thickness", p.vesselWallThickness},
+                                                   {"inflow_vessel_length", p.inflowVesselLength},
+                                                   {"outflow_vessel_length", p.outflowVesselLength},
+                                                   {"resolution", p.resolution}};
+  for (const auto& [key, value] : positive) {
+    if (!std::isfinite(value) || !(value > 0)) fail(key, "must be positive and finite, got " + fmt(value));
+  }
+  if (p.resolution < Real(kMinResolution) || p.resolution > Real(kMaxResolution)) {
+    fail("resolution",
+         "must be in [" + fmt(kMinResolution) + ", " + fmt(kMaxResolution) + "], got " + fmt(p.resolution));
+  }
+  if (!(p.mitralRadius > p.aorticRadius)) {
+    fail("mitral_radius", "must be larger than model.aortic_radius (" + fmt(p.aorticRadius) + " m), got " +
+                              fmt(p.mitralRadius));
+  }
+  if (!(p.baseThickness < p.endoLongAxis)) {
+    fail("base_thickness", "must be smaller than model.endo_long_axis (" + fmt(p.endoLongAxis) + " m), got " +
+                               fmt(p.baseThickness));
+  }
+  // Orifices side by side on the x axis with three equal gaps g (rim, between, rim):
+  // 2a = 2 Rm + 2 Ra + 3 g, and g >= kMinGapInWalls * w.
+  const double need =
+      double(p.mitralRadius) + double(p.aorticRadius) + 1.5 * kMinGapInWalls * p.vesselWallThickness;
+  if (!(need < double(p.endoRadius))) {
+    fail("mitral_radius", "orifices do not fit in the base plate: need mitral_radius + aortic_radius + " +
+                              fmt(1.5 * kMinGapInWalls) + " * vessel_wall_thickness < endo_radius (" +
+                              fmt(p.endoRadius) + " m), got " + fmt(need));
+  }
+}
+
+detail::ShellDims makeDims(const LvGeometryParams& p) {
+  detail::ShellDims d;
+  d.a = p.endoRadius;
+  d.c = p.endoLongAxis;
+  d.t = p.wallThickness;
+  d.baseThickness = p.baseThickness;
+  d.vesselWall = p.vesselWallThickness;
+  d.h = kEdgePerRadius * d.a / double(p.resolution);
+  const double gap = (2 * d.a - 2 * double(p.mitralRadius) - 2 * double(p.aorticRadius)) / 3;
+  d.plateH = std::min(d.h, gap);
+  d.mitral = {
+      {-d.a + gap + double(p.mitralRadius), 0}, p.mitralRadius, p.inflowVesselLength, Region::InflowVessel};
+  d.aortic = {
+      {d.a - gap - double(p.aorticRadius), 0}, p.aorticRadius, p.outflowVesselLength, Region::OutflowVessel};
+  return d;
+}
+
+// Inner-layer ids of an orifice ring, ordered so the fan (centroid, r_k, r_k+1) faces +y.
+std::vector<Index> fanRing(const detail::MidSurface& s, const detail::Ring& ring) {
+  std::vector<Index> ids;
+  Vec3d centroid = Vec3d::Zero();
+  for (Index id : ring.ids) {
+    ids.push_back(2 * id);
+    centroid += s.inner[id];
+  }
+  centroid /= double(ring.ids.size());
+  double ny = 0;
+  for (std::size_t k = 0; k < ring.ids.size(); ++k) {
+    const Vec3d& a = s.inner[ring.ids[k]];
+    const Vec3d& b = s.inner[ring.ids[(k + 1) % ring.ids.size()]];
+    ny += (a - centroid).cross(b - centroid).y();
+  }
+  if (ny < 0) std::reverse(ids.begin(), ids.end());
+  return ids;
+}
+
+}  // namespace
+
+LvModel buildLvModel(const LvGeometryParams& params) {
+  validate(params);
+  const detail::ShellDims d = makeDims(params);
+  detail::MidSurface s;
+  const detail::Ring rim = detail::addCup(s, d);
+  detail::Ring mitralTop;
+  detail::Ring aorticTop;
+  const detail::Ring mitral = detail::addVessel(s, d, d.mitral, mitralTop);
+  const detail::Ring aortic = detail::addVessel(s, d, d.aortic, aorticTop);
+  detail::addBasePlate(s, d, rim, mitral, aortic);
+  detail::orientTriangles(s);
+
+  LvModel model;
+  model.params = params;
+  model.mesh = detail::extrudeShell(s);
+  model.surface = pbd::boundaryFaces(model.mesh.tets);
+  const std::size_t n = model.mesh.vertices.size();
+  model.region.resize(n);
+  model.segment.assign(n, 0);
+  Vec3d centre = Vec3d::Zero();
+  std::size_t myocardium = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    // Both layers take the segment of their endocardial partner: segments are transmural.
+    model.region[v] = s.region[v / 2];
+    if (model.region[v] != Region::Myocardium) continue;
+    model.segment[v] = ahaSegment(s.inner[v / 2], d.c);
+    centre += model.mesh.vertices[v].cast<double>();
+    ++myocardium;
+  }
+  model.centre = (centre / double(myocardium)).cast<Real>();
+  for (const detail::Ring* top : {&mitralTop, &aorticTop}) {
+    for (Index id : top->ids) {
+      model.pinned.push_back(2 * id);
+      model.pinned.push_back(2 * id + 1);
+    }
+  }
+  std::sort(model.pinned.begin(), model.pinned.end());
+  for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+    const pbd::Triangle& t = s.triangles[i];
+    if (s.cavity[i]) model.cavitySurface.push_back({2 * t[0], 2 * t[1], 2 * t[2]});
+  }
+  model.mitralRing = fanRing(s, mitral);
+  model.aorticRing = fanRing(s, aortic);
+  model.longAxisLength = Real(d.c + d.t);
+  return model;
+}
+
+Real cavityVolume(const LvModel& model, const std::vector<Vec3>& positions) {
+  // V = (1/6) sum (a x b) . c over the closed, outward-oriented cavity boundary.
+  auto term = [](const Vec3d& a, const Vec3d& b, const Vec3d& c) { return a.cross(b).dot(c); };
+  double sum = 0;
+  for (const pbd::Triangle& f : model.cavitySurface) {
+    sum +=
+        term(positions[f[0]].cast<double>(), positions[f[1]].cast<double>(), positions[f[2]].cast<double>());
+  }
+  for (const std::vector<Index>* ring : {&model.mitralRing, &model.aorticRing}) {
+    if (ring->empty()) continue;
+    Vec3d centroid = Vec3d::Zero();
+    for (Index v : *ring) centroid += positions[v].cast<double>();
+    centroid /= double(ring->size());
+    for (std::size_t k = 0; k < ring->size(); ++k) {
+      sum += term(centroid, positions[(*ring)[k]].cast<double>(),
+                  positions[(*ring)[(k + 1) % ring->size()]].cast<double>());
+    }
+  }
+  return Real(sum / 6.0);
+}
+
+}  // namespace hs::cardiac

@@ -1,0 +1,252 @@
+// Scenario files: parse TOML, walk it against the key table, apply --set overrides.
+#include "io/scenario_file.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "io/scenario_internal.h"
+
+namespace hs::io {
+namespace {
+
+using cardiac::Scenario;
+using detail::KeySpec;
+using detail::TableSpec;
+using detail::ValueError;
+
+// Messages are one line: newlines (e.g. from a parser description) become spaces.
+[[noreturn]] void fail(std::string message) {
+  std::replace(message.begin(), message.end(), '\n', ' ');
+  std::replace(message.begin(), message.end(), '\r', ' ');
+  throw ScenarioError(message);
+}
+
+std::uint32_t lineOf(const toml::node& node) {
+  std::uint32_t line = node.source().begin.line;
+  if (line == 0) {
+    if (const auto* t = node.as_table()) {
+      for (auto&& [k, v] : *t) {
+        const std::uint32_t l = k.source().begin.line != 0 ? k.source().begin.line : lineOf(v);
+        if (l != 0 && (line == 0 || l < line)) line = l;
+      }
+    }
+  }
+  return line;
+}
+
+// Where an entry came from: "file:line" or "--set KEY=VALUE".
+struct Origin {
+  std::string source;  // file name, or the whole "--set ..." text
+  bool isFile = true;
+  std::string at(std::uint32_t line) const {
+    return isFile && line != 0 ? source + ":" + std::to_string(line) : source;
+  }
+};
+
+struct ParseState {
+  Scenario scenario;
+  std::string sphereOrigin;  // where [cycle.sphere] was enabled, for the final check
+};
+
+// Calls onPresent of every known table that is `dotted` or a prefix of it.
+void markPresent(ParseState& st, std::string_view dotted, const std::string& where) {
+  for (const TableSpec& t : detail::tableTable()) {
+    const bool prefix = dotted.size() > t.name.size() && dotted.substr(0, t.name.size()) == t.name &&
+                        dotted[t.name.size()] == '.';
+    if ((dotted == t.name || prefix) && t.onPresent) {
+      t.onPresent(st.scenario);
+      if (t.name == "cycle.sphere" && st.sphereOrigin.empty()) st.sphereOrigin = where;
+    }
+  }
+}
+
+void applyLeaf(ParseState& st, const std::string& dotted, const toml::node& node, std::uint32_t line,
+               const Origin& origin) {
+  const KeySpec* spec = detail::findKey(dotted);
+  if (!spec) {
+    if (detail::findTable(dotted))
+      fail(origin.at(line) + ": " + dotted + ": expected a table, got " + detail::describeNode(node));
+    fail(origin.at(line) + ": " + dotted + ": unknown " + (node.is_table() ? "table" : "key") +
+         detail::nearMiss(dotted));
+  }
+  try {
+    spec->set(st.scenario, node);
+  } catch (const ValueError& e) {
+    fail(origin.at(e.line != 0 ? e.line : line) + ": " + dotted + ": " + e.message);
+  }
+  markPresent(st, dotted, origin.at(line));
+}
+
+struct Entry {
+  std::string key;
+  const toml::node* node;
+  std::uint32_t line;
+  bool isTable;  // a known table (its keys are separate entries)
+};
+
+void flatten(const toml::table& table, const std::string& prefix, std::vector<Entry>& out) {
+  for (auto&& [k, v] : table) {
+    // A quoted key with a dot ("simulation.dt" = 1) is not the dotted key: keep its quotes.
+    std::string part(k.str());
+    if (part.empty() || part.find_first_of(". \t\"") != std::string::npos) part = detail::quoteString(part);
+    const std::string dotted = prefix.empty() ? part : prefix + "." + part;
+    std::uint32_t line = k.source().begin.line;
+    if (line == 0) line = lineOf(v);
+    const bool knownTable = detail::findTable(dotted) != nullptr && v.is_table();
+    out.push_back({dotted, &v, line, knownTable});
+    if (knownTable) flatten(*v.as_table(), dotted, out);
+  }
+}
+
+// Applies every entry of `table` (whose own dotted name is `prefix`), in file order so the first
+// error reported is the first in the file.
+void applyTable(ParseState& st, const toml::table& table, const std::string& prefix, const Origin& origin) {
+  std::vector<Entry> entries;
+  flatten(table, prefix, entries);
+  std::stable_sort(entries.begin(), entries.end(),
+                   [](const Entry& a, const Entry& b) { return a.line < b.line; });
+  for (const Entry& e : entries) {
+    if (e.isTable)
+      markPresent(st, e.key, origin.at(e.line));
+    else
+      applyLeaf(st, e.key, *e.node, e.line, origin);
+  }
+}
+
+std::string trim(std::string_view s) {
+  const auto b = s.find_first_not_of(" \t");
+  if (b == std::string_view::npos) return "";
+  const auto e = s.find_last_not_of(" \t");
+  return std::string(s.substr(b, e - b + 1));
+}
+
+void applyOverride(ParseState& st, const std::string& text) {
+  const Origin origin{"--set " + text, false};
+  const auto eq = text.find('=');
+  const std::string key = eq == std::string::npos ? "" : trim(std::string_view(text).substr(0, eq));
+  if (key.empty()) fail(origin.source + ": expected KEY=VALUE, e.g. --set simulation.dt=0.001");
+  const std::string value = trim(std::string_view(text).substr(eq + 1));
+  const KeySpec* spec = detail::findKey(key);
+  const TableSpec* table = detail::findTable(key);
+  if (!spec && !table) fail(origin.source + ": " + key + ": unknown key" + detail::nearMiss(key));
+
+  // VALUE as a TOML value: the document "x = VALUE" must hold exactly that one key.
+  toml::table doc;
+  const toml::node* node = nullptr;
+  try {
+    const std::string wrapped = "x = " + value;
+    doc = toml::parse(std::string_view(wrapped), std::string_view("--set"));
+    if (doc.size() == 1) node = doc.get("x");
+  } catch (const toml::parse_error&) {
+    node = nullptr;
+  }
+  if (spec) {
+    if (spec->stringLike && (!node || !node->is_string())) {
+      applyLeaf(st, key, toml::value<std::string>(value), 0, origin);
+      return;
+    }
+    if (!node) fail(origin.source + ": " + key + ": expected " + spec->expect + ", got '" + value + "'");
+    applyLeaf(st, key, *node, 0, origin);
+    return;
+  }
+  if (!node || !node->is_table())
+    fail(origin.source + ": " + key + ": expected an inline table, e.g. {key = value}, got '" + value + "'");
+  markPresent(st, key, origin.source);
+  applyTable(st, *node->as_table(), key, origin);
+}
+
+// Checks that involve more than one key.
+void validate(const ParseState& st) {
+  const auto& c = st.scenario.cycle;
+  if (c.sphereEnabled && !(c.sphereRadius > 0))
+    fail(st.sphereOrigin + ": cycle.sphere.radius: required when [cycle.sphere] is used, expected " +
+         detail::findKey("cycle.sphere.radius")->expect + ", got nothing");
+}
+
+std::string builtinList() {
+  std::string list;
+  for (const auto& e : detail::embeddedScenarios()) list += (list.empty() ? "" : ", ") + std::string(e.name);
+  return list.empty() ? "none" : list;
+}
+
+}  // namespace
+
+Scenario parseScenario(std::string_view tomlText, const std::string& sourceName,
+                       const std::vector<std::string>& overrides) {
+  ParseState st;
+  const std::string stem = std::filesystem::path(sourceName).stem().string();
+  if (!stem.empty()) st.scenario.name = stem;
+
+  toml::table root;
+  try {
+    root = toml::parse(tomlText, sourceName);
+  } catch (const toml::parse_error& e) {
+    const auto& b = e.source().begin;
+    std::string where = sourceName;
+    if (b.line != 0) where += ":" + std::to_string(b.line) + ":" + std::to_string(b.column);
+    fail(where + ": TOML syntax error: " + std::string(e.description()));
+  }
+  applyTable(st, root, "", Origin{sourceName, true});
+  for (const std::string& o : overrides) applyOverride(st, o);
+  validate(st);
+  return st.scenario;
+}
+
+std::vector<std::string> builtinScenarioNames() {
+  std::vector<std::string> names;
+  for (const auto& e : detail::embeddedScenarios()) names.emplace_back(e.name);
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::string builtinScenarioText(const std::string& name) {
+  for (const auto& e : detail::embeddedScenarios())
+    if (e.name == name) return std::string(e.text);
+  fail("no such built-in scenario: '" + name + "' (built-ins: " + builtinList() + ")");
+}
+
+Scenario loadScenario(const std::string& nameOrPath, const std::vector<std::string>& overrides) {
+  for (const auto& e : detail::embeddedScenarios())
+    if (e.name == nameOrPath) return parseScenario(e.text, "scenarios/" + nameOrPath + ".toml", overrides);
+
+  std::error_code ec;
+  const std::filesystem::path path(nameOrPath);
+  if (nameOrPath.empty() || !std::filesystem::exists(path, ec))
+    fail("no such scenario file or built-in scenario: '" + nameOrPath + "' (built-ins: " + builtinList() +
+         ")");
+  if (!std::filesystem::is_regular_file(path, ec)) fail(nameOrPath + ": not a regular file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(nameOrPath + ": cannot open the file");
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) fail(nameOrPath + ": cannot read the file");
+  return parseScenario(text, nameOrPath, overrides);
+}
+
+std::vector<ScenarioKeyInfo> scenarioKeys() {
+  const Scenario defaults;
+  std::vector<ScenarioKeyInfo> out;
+  for (const KeySpec& k : detail::keyTable())
+    out.push_back({k.name, k.type, k.unit, k.range, k.get(defaults), k.doc});
+  return out;
+}
+
+std::string scenarioToToml(const Scenario& scenario) {
+  std::string out;
+  std::string currentTable;
+  for (const KeySpec& k : detail::keyTable()) {
+    const auto dot = k.name.rfind('.');
+    const std::string table = k.name.substr(0, dot);
+    const TableSpec* t = detail::findTable(table);
+    if (t && t->written && !t->written(scenario)) continue;
+    if (table != currentTable) {
+      out += (out.empty() ? "[" : "\n[") + table + "]\n";
+      currentTable = table;
+    }
+    out += k.name.substr(dot + 1) + " = " + k.get(scenario) + "\n";
+  }
+  return out;
+}
+
+}  // namespace hs::io

@@ -1,0 +1,170 @@
+// The scenario key table: one row per key. Adding a key is one row here (plus its line in
+// docs/scenarios.md and, if it belongs in the lesson file, scenarios/*.toml).
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "io/scenario_internal.h"
+#include "io/scenario_key_builders.h"
+
+namespace hs::io::detail {
+namespace {
+
+using namespace builders;  // NOLINT(google-build-using-namespace): the row vocabulary
+using cardiac::Scenario;
+
+// The field accessor of a row: a captureless lambda Scenario& -> field&.
+// clang-format off
+#define HS_FIELD(expr) [](Scenario& s) -> auto& { return s.expr; }
+// clang-format on
+
+using cardiac::BeatPattern;
+using cardiac::TimingMode;
+
+std::vector<KeySpec> buildKeyTable() {
+  const std::vector<std::pair<std::string, TimingMode>> modes = {
+      {"thesis", TimingMode::Thesis}, {"physiological", TimingMode::Physiological}};
+  const std::vector<std::pair<std::string, BeatPattern>> patterns = {
+      {"normal", BeatPattern::Normal},
+      {"irregular", BeatPattern::Irregular},
+      {"inconsistent", BeatPattern::Inconsistent}};
+  const char* m = "m";
+  return {
+      // [scenario]
+      stringKey("scenario.name", HS_FIELD(name), true,
+                "Name shown in the output; defaults to the built-in name or the file name without .toml."),
+      stringKey("scenario.description", HS_FIELD(description), false, "Free text describing the lesson."),
+      // [simulation]
+      realKey("simulation.dt", HS_FIELD(simulation.dt), gtLe(0, 0.1), "s", "Time step."),
+      realKey("simulation.duration", HS_FIELD(simulation.duration), between(0, 36000), "s",
+              "Simulated time; the run takes round(duration / dt) steps."),
+      intKey("simulation.iterations", HS_FIELD(simulation.iterations), 1, "",
+             "Constraint solver iterations per step (more = stiffer, slower).", 1000),
+      vec3Key("simulation.gravity", HS_FIELD(simulation.gravity), "m/s^2",
+              "Gravity [x, y, z]; y is the long axis (apex at -y, vessels at +y)."),
+      // [model]
+      realKey("model.endo_radius", HS_FIELD(geometry.endoRadius), gt(0), m,
+              "Short-axis radius of the cavity at the base plane."),
+      realKey("model.endo_long_axis", HS_FIELD(geometry.endoLongAxis), gt(0), m,
+              "Cavity length from the base plane to the inner apex."),
+      realKey("model.wall_thickness", HS_FIELD(geometry.wallThickness), gt(0), m,
+              "Myocardium thickness (also at the apex)."),
+      realKey("model.base_thickness", HS_FIELD(geometry.baseThickness), gt(0), m,
+              "Thickness of the base plate that holds the valves."),
+      realKey("model.mitral_radius", HS_FIELD(geometry.mitralRadius), gt(0), m,
+              "Inflow (mitral) orifice and vessel lumen radius."),
+      realKey("model.aortic_radius", HS_FIELD(geometry.aorticRadius), gt(0), m,
+              "Outflow (aortic) orifice and vessel lumen radius."),
+      realKey("model.vessel_wall_thickness", HS_FIELD(geometry.vesselWallThickness), gt(0), m,
+              "Wall thickness of both vessels."),
+      realKey("model.inflow_vessel_length", HS_FIELD(geometry.inflowVesselLength), gt(0), m,
+              "Inflow vessel length above the base plate."),
+      realKey("model.outflow_vessel_length", HS_FIELD(geometry.outflowVesselLength), gt(0), m,
+              "Outflow vessel length above the base plate."),
+      realKey("model.resolution", HS_FIELD(geometry.resolution), between(0.25, 8), "",
+              "Mesh refinement: 1 = thesis model (~1,061 vertices); elements grow ~ resolution^2."),
+      // [tissue]
+      realKey("tissue.stiffness", HS_FIELD(tissue.stiffness), between(0, 1), "",
+              "PBD stiffness k of every wall constraint (0 = limp, 1 = rigid)."),
+      realKey("tissue.volume_stiffness", HS_FIELD(tissue.volumeStiffness), between(0, 1), "",
+              "PBD stiffness k of the tet volume constraints (1 = incompressible myocardium)."),
+      realKey("tissue.volume_compliance", HS_FIELD(tissue.volumeCompliance), ge(0), "",
+              "XPBD compliance of the tet volume constraints (0 = plain PBD)."),
+      realKey("tissue.area_compliance", HS_FIELD(tissue.areaCompliance), ge(0), "",
+              "XPBD compliance of the surface area constraints (0 = plain PBD)."),
+      realKey("tissue.edge_compliance", HS_FIELD(tissue.edgeCompliance), ge(0), "",
+              "XPBD compliance of the edge distance constraints (0 = plain PBD)."),
+      boolKey("tissue.edges", HS_FIELD(tissue.edges),
+              "Edge distance constraints on (volume and area alone do not hold the shape)."),
+      boolKey("tissue.gravity", HS_FIELD(tissue.gravity),
+              "Gravity acts on the wall too (default false: the pericardium carries the heart's weight)."),
+      realKey("tissue.damping", HS_FIELD(tissue.damping), ge(0), "1/s",
+              "Velocity damping of the wall (viscous tissue)."),
+      realKey("tissue.density", HS_FIELD(tissue.density), gt(0), "kg/m^3",
+              "Tissue density; vertex masses come from tet volumes."),
+      // [cycle]
+      boolKey("cycle.enabled", HS_FIELD(cycle.enabled), "Whether the heart beats at all."),
+      choiceKey("cycle.mode", HS_FIELD(cycle.mode), modes,
+                "Timing: \"thesis\" (fixed steps per phase) or \"physiological\" (heart rate in bpm)."),
+      choiceKey(
+          "cycle.pattern", HS_FIELD(cycle.pattern), patterns,
+          "Beat pattern: regular, irregular (random diastoles) or inconsistent (some segments out of step)."),
+      intKey("cycle.beats", HS_FIELD(cycle.beats), 0, "",
+             "Number of beats, then the wall relaxes; 0 = no limit."),
+      intKey("cycle.beating_duration", HS_FIELD(cycle.beatingDuration), 1, "steps",
+             "Thesis mode: time steps per phase (systole, diastole)."),
+      realKey("cycle.beating_displace", HS_FIELD(cycle.beatingDisplace), ge(0), "m per step",
+              "Thesis mode: inward displacement of a beating vertex per systolic step."),
+      realKey("cycle.heart_rate_bpm", HS_FIELD(cycle.heartRateBpm), between(20, 250), "1/min",
+              "Physiological mode: beats per minute."),
+      realKey("cycle.systolic_fraction", HS_FIELD(cycle.systolicFraction), between(0.05, 0.95), "",
+              "Physiological mode: share of each cycle spent in systole."),
+      realKey("cycle.contraction", HS_FIELD(cycle.contraction), ge(0), m,
+              "Physiological mode: total inward displacement of a beating vertex per systole."),
+      intListKey("cycle.segments", HS_FIELD(cycle.segments), 1, 17, true,
+                 "AHA segments (1..17) that beat; with vertices and sphere empty, all myocardium beats."),
+      intListKey("cycle.vertices", HS_FIELD(cycle.vertices), 0, std::numeric_limits<std::int64_t>::max(),
+                 false, "Vertex ids that beat (added to the segments)."),
+      realKey("cycle.irregularity", HS_FIELD(cycle.irregularity), between(0, 1), "",
+              "Irregular pattern: each diastole is shortened by a random share in [0, irregularity)."),
+      intKey("cycle.seed", HS_FIELD(cycle.seed), 0, "",
+             "Random seed of the irregular pattern (same seed = same run)."),
+      // [cycle.sphere]: present = the vertices inside the sphere beat too
+      vec3Key("cycle.sphere.centre", HS_FIELD(cycle.sphereCentre), m,
+              "Centre of a sphere whose vertices beat (the table's presence enables it)."),
+      realKey("cycle.sphere.radius", HS_FIELD(cycle.sphereRadius), gt(0), m,
+              "Radius of that sphere; required when [cycle.sphere] is present."),
+      // [cycle.inconsistent]
+      intListKey("cycle.inconsistent.segments", HS_FIELD(cycle.inconsistentSegments), 1, 17, true,
+                 "Inconsistent pattern: segments that beat at their own rate and phase."),
+      realKey("cycle.inconsistent.rate_factor", HS_FIELD(cycle.inconsistentRateFactor), between(0.1, 10), "",
+              "Their beat rate relative to the rest of the heart."),
+      realKey("cycle.inconsistent.phase_offset", HS_FIELD(cycle.inconsistentPhaseOffset), between(0, 1),
+              "cycles", "Their phase lag, as a fraction of a cycle."),
+      // [blood]
+      boolKey("blood.enabled", HS_FIELD(blood.enabled), "Whether blood particles are simulated."),
+      intKey("blood.particles", HS_FIELD(blood.particles), 0, "", "Number of blood particles.", 10'000'000),
+      // [output]
+      boolKey("output.vtk", HS_FIELD(output.vtk), "Write VTK frames for ParaView."),
+      intKey("output.vtk_every", HS_FIELD(output.vtkEvery), 1, "steps", "Time steps between VTK frames."),
+  };
+}
+
+}  // namespace
+
+const std::vector<KeySpec>& keyTable() {
+  static const std::vector<KeySpec> table = buildKeyTable();
+  return table;
+}
+
+const std::vector<TableSpec>& tableTable() {
+  static const std::vector<TableSpec> tables = {
+      {"scenario", nullptr, nullptr},
+      {"simulation", nullptr, nullptr},
+      {"model", nullptr, nullptr},
+      {"tissue", nullptr, nullptr},
+      {"cycle", nullptr, nullptr},
+      {"cycle.sphere", [](Scenario& s) { s.cycle.sphereEnabled = true; },
+       [](const Scenario& s) { return s.cycle.sphereEnabled; }},
+      {"cycle.inconsistent", nullptr, nullptr},
+      {"blood", nullptr, nullptr},
+      {"output", nullptr, nullptr},
+  };
+  return tables;
+}
+
+const KeySpec* findKey(std::string_view dotted) {
+  for (const KeySpec& k : keyTable())
+    if (k.name == dotted) return &k;
+  return nullptr;
+}
+
+const TableSpec* findTable(std::string_view dotted) {
+  for (const TableSpec& t : tableTable())
+    if (t.name == dotted) return &t;
+  return nullptr;
+}
+
+}  // namespace hs::io::detail

@@ -1,0 +1,139 @@
+#include "pbd/solver.h"
+
+#include <omp.h>
+
+#include <cstring>
+
+namespace hs::pbd {
+namespace {
+
+// Below this many constraints + particles, a fork-join costs more than it saves.
+constexpr std::size_t kParallelThreshold = 2048;
+
+inline ConstraintEval<4> evaluate(const std::array<Vec3, 4>& x, const TetVolumeConstraint& c) {
+  return evaluateTetVolume(x, c.restVolume);
+}
+inline ConstraintEval<3> evaluate(const std::array<Vec3, 3>& x,
+                                  const TriangleAreaConstraint& c) {
+  return evaluateTriangleArea(x, c.restArea);
+}
+inline ConstraintEval<2> evaluate(const std::array<Vec3, 2>& x, const DistanceConstraint& c) {
+  return evaluateDistance(x, c.restLength);
+}
+
+// Projects every constraint of a group once, colour by colour. Must be called by all threads
+// of the enclosing parallel region (orphaned worksharing); within a colour no two
+// constraints share a particle, so the writes never race and the result does not depend on
+// how iterations are split between threads.
+template <class Constraint>
+void projectGroup(ConstraintGroup<Constraint>& group, Particles& particles, Real dt) {
+  constexpr std::size_t kN = std::tuple_size_v<decltype(Constraint::particles)>;
+  const ProjectionParams params{group.compliance / (dt * dt), group.stiffness};
+  Vec3* p = particles.predicted.data();
+  const Real* w = particles.inverseMass.data();
+  for (std::size_t colour = 0; colour < group.colourCount(); ++colour) {
+    const auto begin = static_cast<std::ptrdiff_t>(group.colourStart[colour]);
+    const auto end = static_cast<std::ptrdiff_t>(group.colourStart[colour + 1]);
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t c = begin; c < end; ++c) {
+      const Constraint& constraint = group.constraints[c];
+      std::array<Vec3, kN> x;
+      std::array<Real, kN> weight;
+      for (std::size_t i = 0; i < kN; ++i) {
+        x[i] = p[constraint.particles[i]];
+        weight[i] = w[constraint.particles[i]];
+      }
+      const Projection<kN> r = projectXpbd(evaluate(x, constraint), weight, params, group.lambda[c]);
+      group.lambda[c] += r.deltaLambda;
+      for (std::size_t i = 0; i < kN; ++i) p[constraint.particles[i]] += r.dx[i];
+    }
+  }
+}
+
+void projectPlanes(const ConstraintSet& constraints, Particles& particles) {
+  if (constraints.planes.empty()) return;
+  const auto n = static_cast<std::ptrdiff_t>(particles.size());
+#pragma omp for schedule(static)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    for (const Plane& plane : constraints.planes) {
+      particles.predicted[i] += projectPlaneCollision(
+          particles.predicted[i], particles.inverseMass[i], plane, constraints.collisionRadius);
+    }
+  }
+}
+
+}  // namespace
+
+void applyExternalForces(Particles& particles, const SolverSettings& settings) {
+  const auto n = static_cast<std::ptrdiff_t>(particles.size());
+  const Vec3 dv = settings.dt * settings.gravity;
+#pragma omp parallel for schedule(static) num_threads(settings.threads) \
+    if (static_cast<std::size_t>(n) >= kParallelThreshold)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    if (particles.inverseMass[i] > Real(0))
+      particles.velocity[i] += settings.gravityScale[static_cast<std::size_t>(particles.kind[i])] * dv;
+  }
+}
+
+void predictPositions(Particles& particles, const SolverSettings& settings) {
+  const auto n = static_cast<std::ptrdiff_t>(particles.size());
+#pragma omp parallel for schedule(static) num_threads(settings.threads) \
+    if (static_cast<std::size_t>(n) >= kParallelThreshold)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    particles.predicted[i] = particles.position[i] + settings.dt * particles.velocity[i];
+  }
+}
+
+void projectConstraints(ConstraintSet& constraints, Particles& particles,
+                        const SolverSettings& settings) {
+  std::fill(constraints.distances.lambda.begin(), constraints.distances.lambda.end(), Real(0));
+  std::fill(constraints.areas.lambda.begin(), constraints.areas.lambda.end(), Real(0));
+  std::fill(constraints.volumes.lambda.begin(), constraints.volumes.lambda.end(), Real(0));
+  const std::size_t work = constraints.distances.size() + constraints.areas.size() +
+                           constraints.volumes.size() + particles.size();
+  // One parallel region for all iterations: threads meet only at the end of each colour.
+#pragma omp parallel num_threads(settings.threads) if (work >= kParallelThreshold)
+  for (int iteration = 0; iteration < settings.iterations; ++iteration) {
+    projectGroup(constraints.distances, particles, settings.dt);
+    projectGroup(constraints.areas, particles, settings.dt);
+    projectGroup(constraints.volumes, particles, settings.dt);
+    projectPlanes(constraints, particles);
+  }
+}
+
+void updateVelocities(Particles& particles, const SolverSettings& settings) {
+  const auto n = static_cast<std::ptrdiff_t>(particles.size());
+  const Real invDt = Real(1) / settings.dt;
+  const Real keep = std::max(Real(0), Real(1) - settings.damping * settings.dt);
+#pragma omp parallel for schedule(static) num_threads(settings.threads) \
+    if (static_cast<std::size_t>(n) >= kParallelThreshold)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    particles.velocity[i] = (keep * invDt) * (particles.predicted[i] - particles.position[i]);
+    particles.position[i] = particles.predicted[i];
+  }
+}
+
+void step(ConstraintSet& constraints, Particles& particles, const SolverSettings& settings) {
+  applyExternalForces(particles, settings);
+  predictPositions(particles, settings);
+  projectConstraints(constraints, particles, settings);
+  updateVelocities(particles, settings);
+}
+
+std::uint64_t stateHash(const Particles& particles) {
+  std::uint64_t hash = 1469598103934665603ull;  // FNV-1a offset basis
+  auto mix = [&hash](const void* data, std::size_t bytes) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) {
+      hash ^= b[i];
+      hash *= 1099511628211ull;  // FNV prime
+    }
+  };
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    mix(particles.position[i].data(), 3 * sizeof(Real));
+    mix(particles.velocity[i].data(), 3 * sizeof(Real));
+  }
+  return hash;
+}
+
+}  // namespace hs::pbd

@@ -1,0 +1,18 @@
+#pragma once
+// Scalar and vector types shared by the whole engine.
+#include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
+#include <cstdint>
+
+namespace hs::pbd {
+
+#ifdef HS_DOUBLE
+using Real = double;
+#else
+using Real = float;
+#endif
+
+using Vec3 = Eigen::Matrix<Real, 3, 1>;
+using Index = std::uint32_t;
+
+}  // namespace hs::pbd

@@ -1,0 +1,73 @@
+// Bad input through the command line: exit code 2 and one line on stderr naming the file and
+// key; nothing on stdout.
+#include <gtest/gtest.h>
+
+#include "cli_runner.h"
+
+namespace hs::testing {
+namespace {
+
+int lineCount(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+void expectBadInput(const CliResult& r, const std::vector<std::string>& mustMention) {
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  for (const std::string& word : mustMention) EXPECT_NE(r.err.find(word), std::string::npos) << "missing '" << word << "' in: " << r.err;
+}
+
+void writeFile(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+}
+
+TEST(CliErrors, MissingScenarioFile) {
+  const auto dir = scratchDir("missing");
+  expectBadInput(runHeartsim("run no-such-lesson.toml --json", dir), {"no-such-lesson.toml"});
+}
+
+TEST(CliErrors, MalformedTomlNamesFileAndLine) {
+  const auto dir = scratchDir("malformed");
+  writeFile(dir / "broken.toml", "[simulation]\ndt = 0.005\nduration = = 2\n");
+  expectBadInput(runHeartsim("run broken.toml --json", dir), {"broken.toml", ":3"});
+}
+
+TEST(CliErrors, UnknownKeyNamesFileAndKey) {
+  const auto dir = scratchDir("unknown");
+  writeFile(dir / "typo.toml", "[cycle]\nbeat = 2\n");
+  expectBadInput(runHeartsim("run typo.toml --json", dir), {"typo.toml", "cycle.beat"});
+}
+
+TEST(CliErrors, NegativeDtFromFileAndFromSet) {
+  const auto dir = scratchDir("negative");
+  writeFile(dir / "neg.toml", "[simulation]\ndt = -0.005\n");
+  expectBadInput(runHeartsim("run neg.toml --json", dir), {"neg.toml", "simulation.dt"});
+  expectBadInput(runHeartsim("run heart-only --set simulation.dt=-0.01 --json", dir), {"--set", "simulation.dt"});
+}
+
+TEST(CliErrors, NanDt) {
+  const auto dir = scratchDir("nan");
+  writeFile(dir / "nan.toml", "[simulation]\ndt = nan\n");
+  expectBadInput(runHeartsim("run nan.toml --json", dir), {"nan.toml", "simulation.dt"});
+}
+
+TEST(CliErrors, BadDurationOption) {
+  const auto dir = scratchDir("duration");
+  expectBadInput(runHeartsim("run heart-only --duration -1 --json", dir), {"--duration"});
+}
+
+TEST(CliErrors, UnknownBenchCase) {
+  const auto dir = scratchDir("bench");
+  expectBadInput(runHeartsim("bench --case no-such-case --json", dir), {"no-such-case"});
+}
+
+TEST(CliErrors, OutOfRangeBeatingVertex) {
+  const auto dir = scratchDir("vertex");
+  expectBadInput(runHeartsim("run heart-only --set 'cycle.vertices=[999999]' --json", dir), {"cycle.vertices", "999999"});
+}
+
+}  // namespace
+}  // namespace hs::testing

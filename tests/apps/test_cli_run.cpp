@@ -1,0 +1,81 @@
+// The headless runner end to end: the JSON report, its acceptance figures, determinism across
+// thread counts, and the files it writes.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+#include "io/vtk_writer.h"
+
+namespace hs::testing {
+namespace {
+
+nlohmann::json runJson(const std::string& args, const std::string& name) {
+  const auto dir = scratchDir(name);
+  const CliResult r = runHeartsim("run " + args + " --json --out out", dir);
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  return nlohmann::json::parse(r.out);
+}
+
+TEST(CliRun, VersionPrintsVersionAndRevision) {
+  const CliResult r = runHeartsim("--version", scratchDir("version"));
+  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_NE(r.out.find("heartsim 0."), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("git "), std::string::npos) << r.out;
+}
+
+TEST(CliRun, JsonReportHasEveryField) {
+  const nlohmann::json j = runJson("heart-only --duration 0.1", "fields");
+  for (const char* key : {"scenario", "steps", "sim_time_s", "dt_s", "setup_s", "wall_s", "steps_per_s", "threads",
+                          "state_hash", "beats"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  for (const char* key : {"vertices", "tets", "surface_triangles", "volume_error_max", "volume_error_mean",
+                          "inverted_tets", "rest_deviation_final_rel"})
+    EXPECT_TRUE(j["tissue"].contains(key)) << key;
+  for (const char* key : {"volume_min_m3", "volume_max_m3", "ejection_fraction"})
+    EXPECT_TRUE(j["cavity"].contains(key)) << key;
+  EXPECT_EQ(j["steps"], 20);
+  EXPECT_EQ(j["scenario"], "heart-only");
+}
+
+// The foundation's acceptance figures: the thesis-scale wall keeps its tet volumes, never
+// inverts, and ejects while beating.
+TEST(CliRun, HeartOnlyKeepsVolumeAndEjects) {
+  const nlohmann::json j = runJson("heart-only", "accept");
+  EXPECT_LE(j["tissue"]["volume_error_mean"].get<double>(), 0.01);
+  EXPECT_EQ(j["tissue"]["inverted_tets"], 0);
+  EXPECT_GT(j["cavity"]["ejection_fraction"].get<double>(), 0.1);
+  EXPECT_GT(j["beats"].get<int>(), 5);
+}
+
+TEST(CliRun, WallReturnsToRestAfterTwoBeats) {
+  const nlohmann::json j = runJson("heart-only --set cycle.beats=2 --duration 3", "rest");
+  EXPECT_EQ(j["beats"], 2);
+  EXPECT_LE(j["tissue"]["rest_deviation_final_rel"].get<double>(), 0.01);
+}
+
+TEST(CliRun, SameStateHashForOneAndTwoThreads) {
+  const nlohmann::json one = runJson("heart-only --duration 0.5 --threads 1", "threads1");
+  const nlohmann::json two = runJson("heart-only --duration 0.5 --threads 2", "threads2");
+  EXPECT_EQ(one["state_hash"], two["state_hash"]);
+  EXPECT_EQ(two["threads"], 2);
+}
+
+TEST(CliRun, WritesMetricsCsvAndVtkSeries) {
+  const auto dir = scratchDir("files");
+  const CliResult r = runHeartsim("run heart-only --duration 0.1 --vtk --set output.vtk_every=5 --out out", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string csv = readFile(dir / "out" / "metrics.csv");
+  EXPECT_EQ(csv.rfind("step,time_s,phase,cavity_volume_m3", 0), 0u);
+  int rows = 0;
+  for (char c : csv) rows += c == '\n';
+  EXPECT_EQ(rows, 21);  // header + 20 steps
+  const std::string pvd = readFile(dir / "out" / "wall.pvd");
+  EXPECT_NE(pvd.find("wall_20.vtu"), std::string::npos);
+  const io::VtuFrame frame = io::readVtu(dir / "out" / "wall_20.vtu");
+  EXPECT_GT(frame.points.size(), 500u);
+  EXPECT_GT(frame.tets.size(), 1000u);
+}
+
+}  // namespace
+}  // namespace hs::testing

@@ -1,0 +1,142 @@
+// The cycle state machine against thesis Algorithm 2 / Fig. 4.6, step by step, and the
+// physiological and irregular timings.
+#include <gtest/gtest.h>
+
+#include "cardiac/beat_clock.h"
+#include "cardiac/beat_metrics.h"
+
+namespace hs::cardiac {
+namespace {
+
+BeatClockSettings thesis() {
+  BeatClockSettings s;
+  s.systoleSteps = 8;
+  s.diastoleSteps = 8;
+  s.displacePerStep = Real(0.08);
+  return s;
+}
+
+TEST(BeatClock, FollowsAlgorithm2StepByStep) {
+  BeatClock clock(thesis(), Real(0.005));
+  // Algorithm 2 line 3: steps = 0, state = Systole.
+  EXPECT_EQ(clock.phase(), Phase::Systole);
+  EXPECT_EQ(clock.stepsInPhase(), 0);
+  for (int beat = 0; beat < 3; ++beat) {
+    for (int i = 1; i <= 8; ++i) {
+      ASSERT_EQ(clock.phase(), Phase::Systole) << "beat " << beat << " step " << i;
+      // Lines 7-8: move by BEATING_DISPLACE, steps++.
+      EXPECT_FLOAT_EQ(clock.advance(), 0.08f);
+      // Lines 9-11: when steps >= BEATING_DURATION, steps = 0 and the state switches.
+      if (i < 8) {
+        EXPECT_EQ(clock.stepsInPhase(), i);
+      }
+    }
+    EXPECT_EQ(clock.phase(), Phase::Diastole);
+    EXPECT_EQ(clock.stepsInPhase(), 0);
+    EXPECT_EQ(clock.systolesCompleted(), beat + 1);
+    // Fig. 4.6: diastole lasts BEATING_DURATION steps without moving, then systole again.
+    for (int i = 1; i <= 8; ++i) {
+      ASSERT_EQ(clock.phase(), Phase::Diastole);
+      EXPECT_EQ(clock.advance(), 0.0f);
+    }
+    EXPECT_EQ(clock.phase(), Phase::Systole);
+  }
+}
+
+TEST(BeatClock, StopsAfterTheRequestedBeatsAndRests) {
+  BeatClockSettings s = thesis();
+  s.beats = 2;
+  BeatClock clock(s, Real(0.005));
+  Real total = 0;
+  for (int i = 0; i < 200; ++i) total += clock.advance();
+  EXPECT_EQ(clock.phase(), Phase::Rest);
+  EXPECT_EQ(clock.systolesCompleted(), 2);
+  EXPECT_NEAR(total, 2 * 8 * 0.08, 1e-5);
+}
+
+TEST(BeatClock, PhysiologicalSystoleIsSmoothAndSumsToTheContraction) {
+  BeatClockSettings s;
+  s.physiological = true;
+  s.period = Real(60.0 / 75.0);  // 75 bpm: 0.8 s
+  s.systolicFraction = Real(0.375);  // 0.3 s of systole
+  s.contraction = Real(0.01);
+  const Real dt = Real(0.001);
+  BeatClock clock(s, dt);
+  std::vector<Real> perStep;
+  while (clock.phase() == Phase::Systole) perStep.push_back(clock.advance());
+  ASSERT_EQ(perStep.size(), 300u);
+  Real total = 0;
+  for (Real d : perStep) total += d;
+  EXPECT_NEAR(total, 0.01, 1e-6);
+  // Smooth: starts and ends near zero speed, peaks mid-systole, no jumps.
+  EXPECT_LT(perStep.front(), Real(1e-3) * perStep[150]);
+  EXPECT_LT(perStep.back(), Real(1e-3) * perStep[150]);
+  for (std::size_t i = 1; i < perStep.size(); ++i)
+    EXPECT_LT(std::abs(perStep[i] - perStep[i - 1]), Real(0.03) * perStep[150]);
+  int diastole = 0;
+  while (clock.phase() == Phase::Diastole) {
+    EXPECT_EQ(clock.advance(), 0.0f);
+    ++diastole;
+  }
+  EXPECT_EQ(diastole, 500);
+}
+
+TEST(BeatClock, IrregularDiastolesAreShorterAndVary) {
+  BeatClockSettings s = thesis();
+  s.systoleSteps = 20;
+  s.diastoleSteps = 20;
+  s.irregularity = Real(0.6);
+  BeatClock clock(s, Real(0.005));
+  std::vector<int> lengths;
+  for (int i = 0; i < 2000; ++i) {
+    const Phase before = clock.phase();
+    clock.advance();
+    if (before == Phase::Systole && clock.phase() == Phase::Diastole) lengths.push_back(clock.diastoleLength());
+  }
+  ASSERT_GT(lengths.size(), 20u);
+  int shorter = 0;
+  for (int l : lengths) {
+    EXPECT_LE(l, 20);
+    EXPECT_GE(l, 8);  // at most 60% cut
+    if (l < 20) ++shorter;
+  }
+  EXPECT_GT(shorter, int(lengths.size()) / 2);
+  EXPECT_NE(*std::min_element(lengths.begin(), lengths.end()), *std::max_element(lengths.begin(), lengths.end()));
+  // Same seed, same rhythm.
+  BeatClock again(s, Real(0.005));
+  std::vector<int> repeat;
+  for (int i = 0; i < 2000; ++i) {
+    const Phase before = again.phase();
+    again.advance();
+    if (before == Phase::Systole && again.phase() == Phase::Diastole) repeat.push_back(again.diastoleLength());
+  }
+  EXPECT_EQ(lengths, repeat);
+}
+
+TEST(BeatClock, DelayedStartShiftsThePhase) {
+  BeatClock clock(thesis(), Real(0.005));
+  clock.delayStart(8);
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(clock.advance(), 0.0f);
+  EXPECT_EQ(clock.phase(), Phase::Systole);
+  EXPECT_GT(clock.advance(), 0.0f);
+}
+
+TEST(BeatTracker, MeasuresEdvEsvAndEjectionFraction) {
+  BeatTracker tracker(100);
+  // Beat 1: contracts to 40 then refills to 100. Beat 2: 100 -> 70.
+  const double volumes[] = {80, 60, 40, 70, 100, 85, 70, 90};
+  const Phase phases[] = {Phase::Systole, Phase::Systole, Phase::Systole, Phase::Diastole,
+                          Phase::Diastole, Phase::Systole, Phase::Systole, Phase::Diastole};
+  for (int i = 0; i < 8; ++i) tracker.record(i * 0.1, phases[i], volumes[i]);
+  tracker.finish();
+  ASSERT_EQ(tracker.beats().size(), 2u);
+  EXPECT_DOUBLE_EQ(tracker.beats()[0].edv, 100);
+  EXPECT_DOUBLE_EQ(tracker.beats()[0].esv, 40);
+  EXPECT_DOUBLE_EQ(tracker.beats()[0].ejectionFraction(), 0.6);
+  EXPECT_DOUBLE_EQ(tracker.beats()[1].edv, 100);
+  EXPECT_DOUBLE_EQ(tracker.beats()[1].esv, 70);
+  EXPECT_NEAR(tracker.meanEjectionFraction(), 0.45, 1e-12);
+}
+
+}  // namespace
+}  // namespace hs::cardiac
