@@ -73,7 +73,7 @@ void BM_SoftBodyStep(benchmark::State& state) {
   addSoftBody(particles, constraints, mesh, boundaryFaces(mesh.tets), SoftBodySettings{});
   for (std::size_t i = 0; i < particles.size(); ++i)
     if (particles.position[i].y() == Real(0)) particles.inverseMass[i] = 0;
-  finalizeConstraints(constraints, particles.size());
+  finalizeConstraints(constraints, particles.position);
   SolverSettings settings;
   settings.threads = threads;
   for (auto _ : state) step(constraints, particles, settings);

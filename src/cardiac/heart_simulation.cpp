@@ -27,7 +27,7 @@ Index buildWall(const Scenario& scenario, const LvModel& model, pbd::Particles& 
   const Index first = pbd::addSoftBody(particles, constraints, model.mesh, model.surface,
                                        softBodySettings(scenario.tissue));
   for (Index v : model.pinned) particles.inverseMass[first + v] = 0;
-  pbd::finalizeConstraints(constraints, particles.size());
+  pbd::finalizeConstraints(constraints, particles.position);
   return first;
 }
 

@@ -27,17 +27,19 @@ enum class Region : std::uint8_t {
   OutflowVessel = 3,
 };
 
+// Defaults: the thesis-scale model (docs/thesis-deviations.md): sized for the thesis's blood
+// (1,000 particles of radius 0.08 m) and its beating constants (0.64 m of systolic travel).
 struct LvGeometryParams {
   // Endocardium: half prolate spheroid x^2/a^2 + y^2/c^2 + z^2/a^2 = 1, y <= 0.
-  Real endoRadius = Real(1.0);            // a (m), short-axis radius of the cavity at the base plane
-  Real endoLongAxis = Real(2.0);          // c (m), base plane to endocardial apex
-  Real wallThickness = Real(0.3);         // (m) myocardium, also at the apex
-  Real baseThickness = Real(0.15);        // (m) base plate
-  Real mitralRadius = Real(0.36);         // (m) inflow orifice / vessel lumen radius
-  Real aorticRadius = Real(0.26);         // (m) outflow orifice / vessel lumen radius (smaller than mitral)
-  Real vesselWallThickness = Real(0.06);  // (m) thin vessel walls
-  Real inflowVesselLength = Real(1.0);    // (m) above the base plate
-  Real outflowVesselLength = Real(1.0);   // (m)
+  Real endoRadius = Real(2.0);            // a (m), short-axis radius of the cavity at the base plane
+  Real endoLongAxis = Real(4.0);          // c (m), base plane to endocardial apex
+  Real wallThickness = Real(0.5);         // (m) myocardium, also at the apex
+  Real baseThickness = Real(0.3);        // (m) base plate
+  Real mitralRadius = Real(0.75);         // (m) inflow orifice / vessel lumen radius
+  Real aorticRadius = Real(0.55);         // (m) outflow orifice / vessel lumen radius (smaller than mitral)
+  Real vesselWallThickness = Real(0.12);  // (m) thin vessel walls
+  Real inflowVesselLength = Real(2.0);    // (m) above the base plate
+  Real outflowVesselLength = Real(2.0);   // (m)
   // Resolution in [0.25, 8]: 1 gives the thesis-like model (~1,061 vertices, ~3,345 tets);
   // the element edge length is 0.21 * endoRadius / resolution, so the number of elements grows
   // roughly with resolution^2 (it is a shell one tet thick).

@@ -30,7 +30,9 @@ struct TissueSettings {
   // Whether gravity acts on the wall. In the body the heart's weight is carried by the
   // pericardium and the great vessels, so by default only the blood feels gravity.
   bool gravity = false;
-  Real damping = 0;        // 1/s, velocity damping of the wall (viscous tissue)
+  // 1/s, velocity damping of the wall: myocardium is viscoelastic, and without it the
+  // released wall would ring around its rest shape instead of settling (cardiac-cycle.md).
+  Real damping = Real(5);
   Real density = 1060;     // kg/m^3, gives vertex masses from tet volumes
 };
 

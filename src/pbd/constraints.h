@@ -50,7 +50,7 @@ inline ConstraintEval<3> evaluateTriangleArea(const std::array<Vec3, 3>& x, Real
     for (auto& g : c.gradient) g.setZero();
     return c;
   }
-  const Vec3 unit = n / length;
+  const Vec3 unit = n * (Real(1) / length);
   c.gradient[1] = Real(0.5) * e2.cross(unit);
   c.gradient[2] = Real(0.5) * unit.cross(e1);
   c.gradient[0] = -(c.gradient[1] + c.gradient[2]);
@@ -69,7 +69,7 @@ inline ConstraintEval<2> evaluateDistance(const std::array<Vec3, 2>& x, Real res
   const Real length = d.norm();
   ConstraintEval<2> c;
   c.value = length - restLength;
-  const Vec3 unit = length > Real(0) ? Vec3(d / length) : Vec3::Zero();
+  const Vec3 unit = length > Real(0) ? Vec3(d * (Real(1) / length)) : Vec3::Zero();
   c.gradient[1] = unit;
   c.gradient[0] = -unit;
   return c;

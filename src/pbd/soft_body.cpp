@@ -36,10 +36,8 @@ Index addSoftBody(Particles& particles, ConstraintSet& constraints, const TetMes
   return first;
 }
 
-void finalizeConstraints(ConstraintSet& constraints, std::size_t particleCount) {
-  colourConstraints(constraints.distances, particleCount);
-  colourConstraints(constraints.areas, particleCount);
-  colourConstraints(constraints.volumes, particleCount);
+void finalizeConstraints(ConstraintSet& constraints, const std::vector<Vec3>& positions) {
+  constraints.schedule = buildBlockSchedule(constraints, positions);
 }
 
 }  // namespace hs::pbd

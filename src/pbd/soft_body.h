@@ -25,7 +25,8 @@ struct SoftBodySettings {
 Index addSoftBody(Particles& particles, ConstraintSet& constraints, const TetMesh& mesh,
                   const std::vector<Triangle>& surface, const SoftBodySettings& settings);
 
-// Colours every constraint group for parallel Gauss-Seidel; call once after adding bodies.
-void finalizeConstraints(ConstraintSet& constraints, std::size_t particleCount);
+// Builds the parallel Gauss-Seidel schedule (block_schedule.h) from the rest positions;
+// call once after adding bodies.
+void finalizeConstraints(ConstraintSet& constraints, const std::vector<Vec3>& positions);
 
 }  // namespace hs::pbd

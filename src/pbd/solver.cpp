@@ -21,33 +21,36 @@ inline ConstraintEval<2> evaluate(const std::array<Vec3, 2>& x, const DistanceCo
   return evaluateDistance(x, c.restLength);
 }
 
-// Projects every constraint of a group once, colour by colour. Must be called by all threads
-// of the enclosing parallel region (orphaned worksharing); within a colour no two
-// constraints share a particle, so the writes never race and the result does not depend on
-// how iterations are split between threads.
+// Projects a block's constraints of one group, in order (Gauss-Seidel). Blocks of one colour
+// touch disjoint particles, so blocks may run on any thread without changing the result.
 template <class Constraint>
-void projectGroup(ConstraintGroup<Constraint>& group, Particles& particles, Real dt) {
+void projectBlock(ConstraintGroup<Constraint>& group, std::size_t block, Particles& particles,
+                  const ProjectionParams& params) {
   constexpr std::size_t kN = std::tuple_size_v<decltype(Constraint::particles)>;
-  const ProjectionParams params{group.compliance / (dt * dt), group.stiffness};
-  Vec3* p = particles.predicted.data();
-  const Real* w = particles.inverseMass.data();
-  for (std::size_t colour = 0; colour < group.colourCount(); ++colour) {
-    const auto begin = static_cast<std::ptrdiff_t>(group.colourStart[colour]);
-    const auto end = static_cast<std::ptrdiff_t>(group.colourStart[colour + 1]);
-#pragma omp for schedule(static)
-    for (std::ptrdiff_t c = begin; c < end; ++c) {
-      const Constraint& constraint = group.constraints[c];
-      std::array<Vec3, kN> x;
-      std::array<Real, kN> weight;
-      for (std::size_t i = 0; i < kN; ++i) {
-        x[i] = p[constraint.particles[i]];
-        weight[i] = w[constraint.particles[i]];
-      }
-      const Projection<kN> r = projectXpbd(evaluate(x, constraint), weight, params, group.lambda[c]);
-      group.lambda[c] += r.deltaLambda;
-      for (std::size_t i = 0; i < kN; ++i) p[constraint.particles[i]] += r.dx[i];
+  Vec3* __restrict p = particles.predicted.data();
+  const Real* __restrict w = particles.inverseMass.data();
+  const Constraint* __restrict constraints = group.constraints.data();
+  Real* __restrict lambda = group.lambda.data();
+  // With zero compliance lambda never enters the update (plain PBD): skip its bookkeeping.
+  const bool compliant = params.alphaTilde != Real(0);
+  const std::size_t end = group.blockStart[block + 1];
+  for (std::size_t c = group.blockStart[block]; c < end; ++c) {
+    const Constraint& constraint = constraints[c];
+    std::array<Vec3, kN> x;
+    std::array<Real, kN> weight;
+    for (std::size_t i = 0; i < kN; ++i) {
+      x[i] = p[constraint.particles[i]];
+      weight[i] = w[constraint.particles[i]];
     }
+    const Projection<kN> r = projectXpbd(evaluate(x, constraint), weight, params, compliant ? lambda[c] : Real(0));
+    if (compliant) lambda[c] += r.deltaLambda;
+    for (std::size_t i = 0; i < kN; ++i) p[constraint.particles[i]] += r.dx[i];
   }
+}
+
+template <class Constraint>
+ProjectionParams paramsOf(const ConstraintGroup<Constraint>& group, Real dt) {
+  return {group.compliance / (dt * dt), group.stiffness};
 }
 
 void projectPlanes(const ConstraintSet& constraints, Particles& particles) {
@@ -93,11 +96,25 @@ void projectConstraints(ConstraintSet& constraints, Particles& particles,
                            constraints.volumes.size() + particles.size();
   // One parallel region for all iterations: threads meet only at the end of each colour.
 #pragma omp parallel num_threads(settings.threads) if (work >= kParallelThreshold)
-  for (int iteration = 0; iteration < settings.iterations; ++iteration) {
-    projectGroup(constraints.distances, particles, settings.dt);
-    projectGroup(constraints.areas, particles, settings.dt);
-    projectGroup(constraints.volumes, particles, settings.dt);
-    projectPlanes(constraints, particles);
+  {
+    const ProjectionParams distance = paramsOf(constraints.distances, settings.dt);
+    const ProjectionParams area = paramsOf(constraints.areas, settings.dt);
+    const ProjectionParams volume = paramsOf(constraints.volumes, settings.dt);
+    const BlockSchedule& schedule = constraints.schedule;
+    for (int iteration = 0; iteration < settings.iterations; ++iteration) {
+      for (std::size_t colour = 0; colour < schedule.colourCount(); ++colour) {
+        const auto begin = static_cast<std::ptrdiff_t>(schedule.colourStart[colour]);
+        const auto end = static_cast<std::ptrdiff_t>(schedule.colourStart[colour + 1]);
+#pragma omp for schedule(dynamic, 1)
+        for (std::ptrdiff_t k = begin; k < end; ++k) {
+          const std::size_t block = schedule.blockOrder[k];
+          projectBlock(constraints.distances, block, particles, distance);
+          projectBlock(constraints.areas, block, particles, area);
+          projectBlock(constraints.volumes, block, particles, volume);
+        }
+      }
+      projectPlanes(constraints, particles);
+    }
   }
 }
 

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "pbd/block_schedule.h"
 #include "pbd/constraint_group.h"
 #include "pbd/constraints.h"
 #include "pbd/particles.h"
@@ -27,13 +28,14 @@ struct SolverSettings {
   int threads = 1;             // OpenMP threads for projection and particle loops
 };
 
-// The constraints of one simulated world. Projection order within an iteration: edges, then
-// triangle areas, then tet volumes (volume last: it is the one the wall must keep best),
-// then collision planes.
+// The constraints of one simulated world. Projection order within an iteration: block colour
+// by block colour (block_schedule.h); inside a block its edges, then triangle areas, then tet
+// volumes (volume last: it is the one the wall must keep best); then collision planes.
 struct ConstraintSet {
   ConstraintGroup<DistanceConstraint> distances;
   ConstraintGroup<TriangleAreaConstraint> areas;
   ConstraintGroup<TetVolumeConstraint> volumes;
+  BlockSchedule schedule;
   std::vector<Plane> planes;
   Real collisionRadius = 0;  // particle radius used against planes
 };

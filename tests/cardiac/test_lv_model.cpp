@@ -326,13 +326,13 @@ TEST(LvModel, BadParametersThrowNamingTheKey) {
        [](LvGeometryParams& p) { p.wallThickness = std::numeric_limits<Real>::quiet_NaN(); }},
       {"model.base_thickness",
        [](LvGeometryParams& p) { p.baseThickness = std::numeric_limits<Real>::infinity(); }},
-      {"model.base_thickness", [](LvGeometryParams& p) { p.baseThickness = 2.5; }},
+      {"model.base_thickness", [](LvGeometryParams& p) { p.baseThickness = 5.0f; }},
       {"model.vessel_wall_thickness", [](LvGeometryParams& p) { p.vesselWallThickness = 0; }},
       {"model.inflow_vessel_length", [](LvGeometryParams& p) { p.inflowVesselLength = -0.1f; }},
       {"model.outflow_vessel_length", [](LvGeometryParams& p) { p.outflowVesselLength = 0; }},
       {"model.aortic_radius", [](LvGeometryParams& p) { p.aorticRadius = 0; }},
       {"model.mitral_radius", [](LvGeometryParams& p) { p.mitralRadius = 0.2f; }},
-      {"model.mitral_radius", [](LvGeometryParams& p) { p.mitralRadius = 0.6f; }},
+      {"model.mitral_radius", [](LvGeometryParams& p) { p.mitralRadius = 1.5f; }},  // does not fit
       {"model.resolution", [](LvGeometryParams& p) { p.resolution = 0.1f; }},
       {"model.resolution", [](LvGeometryParams& p) { p.resolution = 9; }},
   };
@@ -353,7 +353,7 @@ TEST(LvModel, BadParametersThrowNamingTheKey) {
   try {
     buildLvModel(p);
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "model.mitral_radius: must be larger than model.aortic_radius (0.26 m), got 0.2");
+    EXPECT_STREQ(e.what(), "model.mitral_radius: must be larger than model.aortic_radius (0.55 m), got 0.2");
   }
 }
 

@@ -1,6 +1,7 @@
 // Solver behaviour: colouring correctness, free fall, shape recovery, thread determinism.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 #include "box_mesh.h"
@@ -25,29 +26,51 @@ World makeBoxWorld(int n, int pinnedLayer = -1) {
       if (std::abs(w.particles.position[i].y() - Real(pinnedLayer) * Real(0.1)) < Real(1e-6))
         w.particles.inverseMass[i] = 0;
   }
-  finalizeConstraints(w.constraints, w.particles.size());
+  finalizeConstraints(w.constraints, w.particles.position);
   return w;
 }
 
+// Brute force: the particles touched by each block, and no two blocks of a colour share one.
 template <class Group>
-void expectColoursAreIndependent(const Group& group) {
-  for (std::size_t colour = 0; colour < group.colourCount(); ++colour) {
+void addTouched(const Group& group, std::size_t block, std::set<Index>& touched) {
+  for (std::size_t c = group.blockStart[block]; c < group.blockStart[block + 1]; ++c)
+    for (Index p : group.constraints[c].particles) touched.insert(p);
+}
+
+void expectBlocksOfAColourAreIndependent(const ConstraintSet& set) {
+  const BlockSchedule& s = set.schedule;
+  for (std::size_t colour = 0; colour < s.colourCount(); ++colour) {
     std::set<Index> seen;
-    for (std::size_t c = group.colourStart[colour]; c < group.colourStart[colour + 1]; ++c)
-      for (Index p : group.constraints[c].particles)
-        EXPECT_TRUE(seen.insert(p).second) << "colour " << colour << " shares particle " << p;
+    for (std::size_t k = s.colourStart[colour]; k < s.colourStart[colour + 1]; ++k) {
+      std::set<Index> touched;
+      addTouched(set.distances, s.blockOrder[k], touched);
+      addTouched(set.areas, s.blockOrder[k], touched);
+      addTouched(set.volumes, s.blockOrder[k], touched);
+      for (Index p : touched) EXPECT_TRUE(seen.insert(p).second) << "colour " << colour << " shares particle " << p;
+    }
   }
 }
 
-TEST(Solver, ColouringGivesIndependentSetsAndKeepsEveryConstraint) {
-  const World w = makeBoxWorld(4);
-  const TetMesh mesh = testing::makeBoxMesh(4, Real(0.1));
+TEST(Solver, BlockColouringGivesIndependentBlocksAndKeepsEveryConstraint) {
+  const World w = makeBoxWorld(8);
+  const TetMesh mesh = testing::makeBoxMesh(8, Real(0.1));
   EXPECT_EQ(w.constraints.volumes.size(), mesh.tets.size());
-  EXPECT_EQ(w.constraints.volumes.colourStart.back(), mesh.tets.size());
-  expectColoursAreIndependent(w.constraints.volumes);
-  expectColoursAreIndependent(w.constraints.areas);
-  expectColoursAreIndependent(w.constraints.distances);
-  EXPECT_GT(w.constraints.volumes.colourCount(), 1u);
+  EXPECT_EQ(w.constraints.volumes.blockStart.back(), mesh.tets.size());
+  EXPECT_EQ(w.constraints.distances.blockStart.back(), uniqueEdges(mesh.tets).size());
+  EXPECT_EQ(w.constraints.schedule.blockOrder.size(), w.constraints.schedule.blockCount);
+  expectBlocksOfAColourAreIndependent(w.constraints);
+  EXPECT_GT(w.constraints.schedule.blockCount, 8u);
+  // A grid of blocks needs few colours: that is the point of colouring blocks.
+  EXPECT_LE(w.constraints.schedule.colourCount(), 27u);
+}
+
+TEST(Solver, GreedyColouringIsProper) {
+  // A 5-cycle with a chord needs 3 colours; the greedy result must be a proper colouring.
+  const std::vector<std::vector<Index>> graph = {{1, 4, 2}, {0, 2}, {1, 3, 0}, {2, 4}, {3, 0}};
+  const std::vector<Index> colour = greedyColouring(graph);
+  for (std::size_t v = 0; v < graph.size(); ++v)
+    for (Index u : graph[v]) EXPECT_NE(colour[v], colour[u]) << v << "-" << u;
+  EXPECT_EQ(*std::max_element(colour.begin(), colour.end()), 2u);
 }
 
 TEST(Solver, UnconstrainedParticleFallsLikeSymplecticEuler) {

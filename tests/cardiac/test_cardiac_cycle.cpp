@@ -1,0 +1,152 @@
+// Beating-region selection, Algorithm 3's move, and the abnormal patterns against normal.
+#include <gtest/gtest.h>
+
+#include <numeric>
+
+#include "cardiac/beat_metrics.h"
+#include "cardiac/cardiac_cycle.h"
+#include "cardiac/heart_simulation.h"
+
+namespace hs::cardiac {
+namespace {
+
+const LvModel& model() {
+  static const LvModel m = buildLvModel(LvGeometryParams{});
+  return m;
+}
+
+TEST(BeatingSelection, DefaultIsAllMyocardium) {
+  const auto chosen = selectBeatingVertices(CycleSettings{}, model());
+  std::size_t myocardium = 0;
+  for (Region r : model().region) myocardium += r == Region::Myocardium;
+  EXPECT_EQ(chosen.size(), myocardium);
+  for (Index v : chosen) EXPECT_EQ(model().region[v], Region::Myocardium);
+}
+
+TEST(BeatingSelection, BySegmentsVerticesAndSphere) {
+  CycleSettings c;
+  c.segments = {7, 13, 17};
+  for (Index v : selectBeatingVertices(c, model())) {
+    const int s = model().segment[v];
+    EXPECT_TRUE(s == 7 || s == 13 || s == 17) << s;
+  }
+  CycleSettings ids;
+  ids.vertices = {0, 5, 42};
+  EXPECT_EQ(selectBeatingVertices(ids, model()), (std::vector<Index>{0, 5, 42}));
+  CycleSettings sphere;
+  sphere.sphereEnabled = true;
+  sphere.sphereCentre = model().mesh.vertices[100];
+  sphere.sphereRadius = Real(0.3);
+  const auto inSphere = selectBeatingVertices(sphere, model());
+  EXPECT_FALSE(inSphere.empty());
+  for (Index v : inSphere) EXPECT_LE((model().mesh.vertices[v] - sphere.sphereCentre).norm(), Real(0.3));
+  std::size_t brute = 0;
+  for (const Vec3& x : model().mesh.vertices) brute += (x - sphere.sphereCentre).norm() <= Real(0.3);
+  EXPECT_EQ(inSphere.size(), brute);
+}
+
+TEST(BeatingSelection, OutOfRangeVertexIsAClearError) {
+  CycleSettings c;
+  c.vertices = {999999};
+  try {
+    selectBeatingVertices(c, model());
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("cycle.vertices"), std::string::npos);
+  }
+}
+
+TEST(MoveTowardCentre, MovesKinematicallyWithoutOvershoot) {
+  std::vector<Vec3> x{Vec3(1, 0, 0), Vec3(0, Real(0.05), 0)};
+  std::vector<Vec3> p{Vec3(Real(1.1), 0, 0), Vec3(0, Real(0.05), 0)};
+  moveTowardCentre(x, p, {0, 1}, Vec3::Zero(), Real(0.1));
+  EXPECT_NEAR(p[0].x(), 1.0, 1e-6);
+  EXPECT_NEAR(x[0].x(), 0.9, 1e-6);  // x moves with p: p - x (the velocity) is unchanged
+  EXPECT_NEAR((p[1]).norm(), 0, 1e-7);  // stops at the centre, never past it
+}
+
+struct BeatRecord {
+  std::vector<BeatSummary> beats;
+  std::vector<double> volumeAtSystoleOnset;
+  std::vector<double> restDeviationAtSystoleOnset;
+};
+
+BeatRecord runPattern(BeatPattern pattern, double seconds) {
+  Scenario s;
+  s.cycle.pattern = pattern;
+  HeartSimulation sim(s, 1);
+  BeatTracker tracker(sim.cavityVolume());
+  BeatRecord record;
+  const auto steps = static_cast<int>(seconds / double(s.simulation.dt));
+  Phase previous = Phase::Rest;
+  for (int i = 0; i < steps; ++i) {
+    const double before = sim.cavityVolume();
+    const double deviation = sim.restDeviationRelative();
+    const double t = sim.time();
+    sim.step();
+    if (sim.lastPhase() == Phase::Systole && previous != Phase::Systole) {
+      record.volumeAtSystoleOnset.push_back(before);
+      record.restDeviationAtSystoleOnset.push_back(deviation);
+    }
+    previous = sim.lastPhase();
+    tracker.record(t, sim.lastPhase(), sim.cavityVolume());
+  }
+  tracker.finish();
+  record.beats = tracker.beats();
+  return record;
+}
+
+double mean(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size()); }
+
+double meanAfterFirst(const std::vector<double>& v) {  // the first onset is from rest for all
+  return mean(std::vector<double>(v.begin() + 1, v.end()));
+}
+
+// Irregular beating (thesis 6.2): the next contraction starts before the wall has relaxed
+// (it is further from its rest shape when systole begins), beats come more often, and each
+// ejects less.
+TEST(BeatPatterns, IrregularStartsContractingBeforeTheWallRelaxes) {
+  const BeatRecord normal = runPattern(BeatPattern::Normal, 1.5);
+  const BeatRecord irregular = runPattern(BeatPattern::Irregular, 1.5);
+  ASSERT_GT(normal.volumeAtSystoleOnset.size(), 3u);
+  EXPECT_GT(irregular.volumeAtSystoleOnset.size(), normal.volumeAtSystoleOnset.size());
+  EXPECT_GT(meanAfterFirst(irregular.restDeviationAtSystoleOnset), meanAfterFirst(normal.restDeviationAtSystoleOnset));
+  auto meanStroke = [](const BeatRecord& r) {
+    std::vector<double> sv;
+    for (const BeatSummary& b : r.beats) sv.push_back(b.strokeVolume());
+    return meanAfterFirst(sv);
+  };
+  EXPECT_LT(meanStroke(irregular), meanStroke(normal));
+}
+
+// Inconsistent beating: the listed segments contract on their own clock, so there are steps
+// where one region moves while the other rests.
+TEST(BeatPatterns, InconsistentRegionsBeatOutOfStep) {
+  CycleSettings c;
+  c.pattern = BeatPattern::Inconsistent;
+  CardiacCycle cycle(c, model(), 0, Real(0.005));
+  ASSERT_EQ(cycle.regions().size(), 2u);
+  EXPECT_FALSE(cycle.regions()[0].particles.empty());
+  EXPECT_FALSE(cycle.regions()[1].particles.empty());
+  for (Index v : cycle.regions()[1].particles) {
+    const int s = model().segment[v];
+    EXPECT_TRUE(s == 7 || s == 13 || s == 17) << s;
+  }
+  int mainOnly = 0, otherOnly = 0;
+  for (int i = 0; i < 400; ++i) {
+    const bool mainSystole = cycle.regions()[0].clock.phase() == Phase::Systole;
+    const bool otherSystole = cycle.regions()[1].clock.phase() == Phase::Systole;
+    mainOnly += mainSystole && !otherSystole;
+    otherOnly += otherSystole && !mainSystole;
+    std::vector<Vec3> x = model().mesh.vertices, p = x;
+    cycle.apply(x, p);
+  }
+  EXPECT_GT(mainOnly, 40);
+  EXPECT_GT(otherOnly, 40);
+  // Normal: one region, everything in step.
+  CardiacCycle normal(CycleSettings{}, model(), 0, Real(0.005));
+  EXPECT_EQ(normal.regions().size(), 1u);
+}
+
+}  // namespace
+}  // namespace hs::cardiac
