@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <functional>
@@ -27,25 +28,40 @@ struct BenchCase {
   std::function<nlohmann::json(int threads, double seconds)> run;
 };
 
-// Steps a simulation for at least `seconds` after a warm-up and reports throughput.
+// Steps a simulation for at least `seconds` after a warm-up, in windows of about 0.2 s, and
+// reports the median window's throughput (a shared machine's hiccups land in a few windows;
+// the median ignores them) with the slowest and fastest windows beside it.
 template <class Sim>
 nlohmann::json measure(Sim& sim, std::size_t particles, int threads, double seconds) {
   for (int i = 0; i < 50; ++i) sim.step();  // warm-up: caches, first-touch, lazy allocation
   long steps = 0;
+  std::vector<double> windowRates;
   const auto start = Clock::now();
   double elapsed = 0;
-  while (elapsed < seconds || steps < 100) {
-    for (int i = 0; i < 50; ++i) sim.step();
-    steps += 50;
+  while (elapsed < seconds || windowRates.size() < 5) {
+    const auto windowStart = Clock::now();
+    long windowSteps = 0;
+    double window = 0;
+    while (window < 0.2) {
+      for (int i = 0; i < 10; ++i) sim.step();
+      windowSteps += 10;
+      window = std::chrono::duration<double>(Clock::now() - windowStart).count();
+    }
+    windowRates.push_back(double(windowSteps) / window);
+    steps += windowSteps;
     elapsed = std::chrono::duration<double>(Clock::now() - start).count();
   }
-  const double stepsPerSecond = double(steps) / elapsed;
+  std::sort(windowRates.begin(), windowRates.end());
+  const double stepsPerSecond = windowRates[windowRates.size() / 2];
   return {{"steps_per_s", stepsPerSecond},
           {"ns_per_particle_step", 1e9 / (stepsPerSecond * double(particles))},
           {"particles", particles},
           {"threads", threads},
           {"iterations", steps},
-          {"seconds", elapsed}};
+          {"seconds", elapsed},
+          {"steps_per_s_min", windowRates.front()},
+          {"steps_per_s_max", windowRates.back()},
+          {"windows", windowRates.size()}};
 }
 
 std::vector<BenchCase> allCases() {
@@ -56,6 +72,7 @@ std::vector<BenchCase> allCases() {
          cardiac::HeartSimulation sim(scenario, threads);
          nlohmann::json r = measure(sim, sim.particles().size(), threads, seconds);
          r["solver_iterations"] = scenario.simulation.iterations;
+         r["volume_passes"] = scenario.simulation.volumePasses;
          r["tets"] = sim.model().mesh.tets.size();
          return r;
        }},
@@ -69,7 +86,7 @@ double peakRssMb() {
 }
 
 // Runs one case in a forked child; the child writes its JSON result to a pipe.
-nlohmann::json runIsolated(const BenchCase& c, int threads, double seconds) {
+nlohmann::ordered_json runIsolated(const BenchCase& c, int threads, double seconds) {
   int fds[2];
   if (pipe(fds) != 0) throw std::runtime_error("bench: pipe failed");
   const pid_t pid = fork();

@@ -22,10 +22,12 @@ std::array<Vec3, N> randomPoints(unsigned seed) {
 
 void BM_TetVolumeProjection(benchmark::State& state) {
   auto x = randomPoints<4>(1);
-  const std::array<Real, 4> w{1, 1, 1, 1};
   for (auto _ : state) {
-    const auto r = projectXpbd(evaluateTetVolume(x, Real(0.1)), w, ProjectionParams{0, Real(0.5)}, 0);
-    for (std::size_t i = 0; i < 4; ++i) x[i] += Real(1e-3) * r.dx[i];
+    const Correction4 r = projectTetVolume(x[0], x[1], x[2], x[3], 1, 1, 1, 1, Real(0.1), ProjectionParams{0, Real(0.5)}, 0);
+    x[0] += Real(1e-3) * r.dx0;
+    x[1] += Real(1e-3) * r.dx1;
+    x[2] += Real(1e-3) * r.dx2;
+    x[3] += Real(1e-3) * r.dx3;
     benchmark::DoNotOptimize(x);
   }
 }
@@ -33,10 +35,11 @@ BENCHMARK(BM_TetVolumeProjection);
 
 void BM_TriangleAreaProjection(benchmark::State& state) {
   auto x = randomPoints<3>(2);
-  const std::array<Real, 3> w{1, 1, 1};
   for (auto _ : state) {
-    const auto r = projectXpbd(evaluateTriangleArea(x, Real(0.2)), w, ProjectionParams{0, Real(0.5)}, 0);
-    for (std::size_t i = 0; i < 3; ++i) x[i] += Real(1e-3) * r.dx[i];
+    const Correction3 r = projectTriangleArea(x[0], x[1], x[2], 1, 1, 1, Real(0.2), ProjectionParams{0, Real(0.5)}, 0);
+    x[0] += Real(1e-3) * r.dx0;
+    x[1] += Real(1e-3) * r.dx1;
+    x[2] += Real(1e-3) * r.dx2;
     benchmark::DoNotOptimize(x);
   }
 }
@@ -44,10 +47,10 @@ BENCHMARK(BM_TriangleAreaProjection);
 
 void BM_DistanceProjection(benchmark::State& state) {
   auto x = randomPoints<2>(3);
-  const std::array<Real, 2> w{1, 1};
   for (auto _ : state) {
-    const auto r = projectXpbd(evaluateDistance(x, Real(0.5)), w, ProjectionParams{0, Real(0.5)}, 0);
-    for (std::size_t i = 0; i < 2; ++i) x[i] += Real(1e-3) * r.dx[i];
+    const Correction2 r = projectDistance(x[0], x[1], 1, 1, Real(0.5), ProjectionParams{0, Real(0.5)}, 0);
+    x[0] += Real(1e-3) * r.dx0;
+    x[1] += Real(1e-3) * r.dx1;
     benchmark::DoNotOptimize(x);
   }
 }

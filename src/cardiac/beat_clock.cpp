@@ -65,6 +65,7 @@ Real BeatClock::advancePhysiological() {
     const double n = m_systoleLength;
     displacement = Real(double(m_settings.contraction) *
                         (smoothRamp((m_steps + 1) / n) - smoothRamp(m_steps / n)));
+    m_travel = Real(double(m_settings.contraction) * smoothRamp((m_steps + 1) / n));
   }
   ++m_steps;
   if (m_phase == Phase::Systole && m_steps >= m_systoleLength) enterDiastole();

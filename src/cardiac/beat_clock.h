@@ -6,9 +6,9 @@
 // BEATING_DURATION steps the state switches. Algorithm 2 as printed counts steps only in
 // systole (so diastole would never end); Fig. 4.6 switches both ways after BEATING_DURATION,
 // which we follow (docs/cardiac-cycle.md).
-// Physiological mode: heart rate (bpm) and systolic fraction; the inward displacement per
-// systole follows F(s) = s - sin(2 pi s)/(2 pi), s = time in systole / systole length, whose
-// rate sin^2(pi s) starts and ends at zero: smooth in time.
+// Physiological mode: heart rate (bpm) and systolic fraction; the inward travel since systole
+// began follows contraction * F(s), F(s) = s - sin(2 pi s)/(2 pi), s = time in systole /
+// systole length, whose rate sin^2(pi s) starts and ends at zero: smooth in time.
 #include <cstdint>
 #include <random>
 
@@ -44,6 +44,10 @@ class BeatClock {
 
   // Advances one step; returns the inward displacement (m) to apply during this step.
   Real advance();
+  // Physiological mode: inward travel (m) since the current systole began, after the last
+  // advance() (the full contraction once systole is over).
+  [[nodiscard]] Real travel() const { return m_travel; }
+  [[nodiscard]] bool physiological() const { return m_settings.physiological; }
   // Phase offset: the first systole starts only after `steps` relaxed steps.
   void delayStart(int steps);
 
@@ -67,6 +71,7 @@ class BeatClock {
   int m_systoleLength = 0;  // steps
   int m_diastoleLength = 0;
   int m_nominalDiastoleLength = 0;
+  Real m_travel = 0;
   std::mt19937 m_random;
 };
 

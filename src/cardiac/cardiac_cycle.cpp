@@ -52,6 +52,21 @@ void moveTowardCentre(std::vector<Vec3>& positions, std::vector<Vec3>& predicted
 
 namespace {
 
+// Physiological systole: each beating particle's prediction is set on its straight path from
+// its anchor toward the centre, `travel` along it (never past the centre). Unlike the
+// incremental move, x stays: the step's velocity (p - x)/dt is then the path's own velocity,
+// and the constraint corrections of one step do not pile up in the next (p is set, not moved).
+void followPath(std::vector<Vec3>& predicted, const BeatingRegion& region, const Vec3& centre) {
+  const Real travel = region.clock.travel();
+  for (std::size_t k = 0; k < region.particles.size(); ++k) {
+    const Index i = region.particles[k];
+    const Vec3 toCentre = centre - region.anchor[k];
+    const Real distance = toCentre.norm();
+    if (distance <= Real(0)) continue;
+    predicted[i] = region.anchor[k] + (std::min(travel, distance) / distance) * toCentre;
+  }
+}
+
 BeatClockSettings clockSettings(const CycleSettings& cycle) {
   BeatClockSettings s;
   s.physiological = cycle.mode == TimingMode::Physiological;
@@ -82,7 +97,7 @@ CardiacCycle::CardiacCycle(const CycleSettings& cycle, const LvModel& model, Ind
   std::vector<Index> beating = selectBeatingVertices(cycle, model);
   const BeatClockSettings main = clockSettings(cycle);
   if (cycle.pattern != BeatPattern::Inconsistent) {
-    m_regions.push_back({toParticles(beating, firstParticle), BeatClock(main, dt)});
+    m_regions.push_back({toParticles(beating, firstParticle), BeatClock(main, dt), {}});
     return;
   }
   // Inconsistent: the listed segments leave the main region and get their own clock, with
@@ -107,13 +122,23 @@ CardiacCycle::CardiacCycle(const CycleSettings& cycle, const LvModel& model, Ind
   const double cycleSteps = main.physiological ? double(other.period) / double(dt)
                                                : double(other.systoleSteps + other.diastoleSteps);
   offClock.delayStart(int(std::lround(cycleSteps * double(cycle.inconsistentPhaseOffset))));
-  m_regions.push_back({toParticles(mainPart, firstParticle), BeatClock(main, dt)});
-  m_regions.push_back({toParticles(offPart, firstParticle), offClock});
+  m_regions.push_back({toParticles(mainPart, firstParticle), BeatClock(main, dt), {}});
+  m_regions.push_back({toParticles(offPart, firstParticle), offClock, {}});
 }
 
 void CardiacCycle::apply(std::vector<Vec3>& positions, std::vector<Vec3>& predicted) {
   for (BeatingRegion& region : m_regions) {
-    moveTowardCentre(positions, predicted, region.particles, m_centre, region.clock.advance());
+    if (!region.clock.physiological()) {
+      moveTowardCentre(positions, predicted, region.particles, m_centre, region.clock.advance());
+      continue;
+    }
+    const bool systole = region.clock.phase() == Phase::Systole;
+    if (systole && region.clock.stepsInPhase() == 0) {
+      region.anchor.resize(region.particles.size());
+      for (std::size_t k = 0; k < region.particles.size(); ++k) region.anchor[k] = predicted[region.particles[k]];
+    }
+    region.clock.advance();
+    if (systole) followPath(predicted, region, m_centre);
   }
 }
 

@@ -4,6 +4,11 @@
 // are released in diastole so the wall constraints restore the rest shape.
 // Patterns: normal (one region, regular), irregular (diastoles cut short at random) and
 // inconsistent (some segments beat with another rate and phase than the rest).
+// Thesis mode moves each beating vertex by BEATING_DISPLACE per systolic step (Algorithm 3);
+// the constraints push back every step, so the wall's net travel depends on its stiffness.
+// Physiological mode prescribes the path instead: during systole a beating vertex's prediction
+// is set to anchor + travel(t) * dir, anchor being where it was when the systole began and dir the
+// unit vector from there to the centre, so `contraction` is the distance it really travels.
 #include <vector>
 
 #include "cardiac/beat_clock.h"
@@ -15,6 +20,7 @@ namespace hs::cardiac {
 struct BeatingRegion {
   std::vector<Index> particles;  // particle ids (model vertex + first particle)
   BeatClock clock;
+  std::vector<Vec3> anchor;      // physiological mode: positions when the systole began
 };
 
 // Model vertices chosen to beat: the union of segments, vertex ids and sphere; all myocardium

@@ -40,6 +40,7 @@ HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
       m_cycle(scenario.cycle, m_model, m_firstWallParticle, scenario.simulation.dt) {
   m_solver.dt = scenario.simulation.dt;
   m_solver.iterations = scenario.simulation.iterations;
+  m_solver.volumePasses = scenario.simulation.volumePasses;
   m_solver.gravity = scenario.simulation.gravity;
   m_solver.gravityScale[static_cast<std::size_t>(pbd::ParticleKind::Tissue)] = scenario.tissue.gravity ? 1 : 0;
   m_solver.damping = scenario.tissue.damping;

@@ -11,7 +11,8 @@ namespace hs::cardiac {
 struct SimulationSettings {
   Real dt = Real(0.005);        // s (thesis section 5.1)
   Real duration = Real(2.0);    // s (thesis Table 5.5 runs)
-  int iterations = 10;    // solver iterations per step (thesis Algorithm 1, solverIterations)
+  int iterations = 4;     // solver iterations per step (thesis Algorithm 1, solverIterations)
+  int volumePasses = 4;   // extra sweeps of the wall's volume constraints after the iterations
   Vec3 gravity = Vec3(0, Real(-9.81), 0);  // m/s^2 (thesis Table 5.3)
 };
 
@@ -32,7 +33,7 @@ struct TissueSettings {
   bool gravity = false;
   // 1/s, velocity damping of the wall: myocardium is viscoelastic, and without it the
   // released wall would ring around its rest shape instead of settling (cardiac-cycle.md).
-  Real damping = Real(5);
+  Real damping = Real(20);
   Real density = 1060;     // kg/m^3, gives vertex masses from tet volumes
 };
 

@@ -42,6 +42,8 @@ std::vector<KeySpec> buildKeyTable() {
               "Simulated time; the run takes round(duration / dt) steps."),
       intKey("simulation.iterations", HS_FIELD(simulation.iterations), 1, "",
              "Constraint solver iterations per step (more = stiffer, slower).", 1000),
+      intKey("simulation.volume_passes", HS_FIELD(simulation.volumePasses), 0, "",
+             "Extra sweeps of the wall's volume constraints after the iterations (incompressibility).", 1000),
       vec3Key("simulation.gravity", HS_FIELD(simulation.gravity), "m/s^2",
               "Gravity [x, y, z]; y is the long axis (apex at -y, vessels at +y)."),
       // [model]

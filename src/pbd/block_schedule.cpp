@@ -101,7 +101,7 @@ BlockSchedule buildBlockSchedule(ConstraintSet& constraints, const std::vector<V
   // Cells of kCellsPerExtent typical constraint extents (the median): most blocks then
   // conflict only with their neighbours, and there are enough blocks per colour to share
   // between threads. Conflicts are computed exactly, so any cell size is correct.
-  constexpr Real kCellsPerExtent = 1.5;
+  constexpr Real kCellsPerExtent = 2;
   Real typical = 0;
   if (!extents.empty()) {
     auto middle = extents.begin() + static_cast<std::ptrdiff_t>(extents.size() / 2);

@@ -10,15 +10,36 @@ namespace {
 // Below this many constraints + particles, a fork-join costs more than it saves.
 constexpr std::size_t kParallelThreshold = 2048;
 
-inline ConstraintEval<4> evaluate(const std::array<Vec3, 4>& x, const TetVolumeConstraint& c) {
-  return evaluateTetVolume(x, c.restVolume);
+// One projection applied in place; returns the lambda increment.
+HS_KERNEL Real apply(const TetVolumeConstraint& c, Vec3* p, const Real* w, const ProjectionParams& params,
+                  Real lambda) {
+  const auto [i0, i1, i2, i3] = c.particles;
+  const Correction4 r = projectTetVolume(p[i0], p[i1], p[i2], p[i3], w[i0], w[i1], w[i2], w[i3], c.restVolume,
+                                         params, lambda);
+  p[i0] += r.dx0;
+  p[i1] += r.dx1;
+  p[i2] += r.dx2;
+  p[i3] += r.dx3;
+  return r.deltaLambda;
 }
-inline ConstraintEval<3> evaluate(const std::array<Vec3, 3>& x,
-                                  const TriangleAreaConstraint& c) {
-  return evaluateTriangleArea(x, c.restArea);
+
+HS_KERNEL Real apply(const TriangleAreaConstraint& c, Vec3* p, const Real* w, const ProjectionParams& params,
+                  Real lambda) {
+  const auto [i0, i1, i2] = c.particles;
+  const Correction3 r = projectTriangleArea(p[i0], p[i1], p[i2], w[i0], w[i1], w[i2], c.restArea, params, lambda);
+  p[i0] += r.dx0;
+  p[i1] += r.dx1;
+  p[i2] += r.dx2;
+  return r.deltaLambda;
 }
-inline ConstraintEval<2> evaluate(const std::array<Vec3, 2>& x, const DistanceConstraint& c) {
-  return evaluateDistance(x, c.restLength);
+
+HS_KERNEL Real apply(const DistanceConstraint& c, Vec3* p, const Real* w, const ProjectionParams& params,
+                  Real lambda) {
+  const auto [i0, i1] = c.particles;
+  const Correction2 r = projectDistance(p[i0], p[i1], w[i0], w[i1], c.restLength, params, lambda);
+  p[i0] += r.dx0;
+  p[i1] += r.dx1;
+  return r.deltaLambda;
 }
 
 // Projects a block's constraints of one group, in order (Gauss-Seidel). Blocks of one colour
@@ -26,7 +47,6 @@ inline ConstraintEval<2> evaluate(const std::array<Vec3, 2>& x, const DistanceCo
 template <class Constraint>
 void projectBlock(ConstraintGroup<Constraint>& group, std::size_t block, Particles& particles,
                   const ProjectionParams& params) {
-  constexpr std::size_t kN = std::tuple_size_v<decltype(Constraint::particles)>;
   Vec3* __restrict p = particles.predicted.data();
   const Real* __restrict w = particles.inverseMass.data();
   const Constraint* __restrict constraints = group.constraints.data();
@@ -35,16 +55,8 @@ void projectBlock(ConstraintGroup<Constraint>& group, std::size_t block, Particl
   const bool compliant = params.alphaTilde != Real(0);
   const std::size_t end = group.blockStart[block + 1];
   for (std::size_t c = group.blockStart[block]; c < end; ++c) {
-    const Constraint& constraint = constraints[c];
-    std::array<Vec3, kN> x;
-    std::array<Real, kN> weight;
-    for (std::size_t i = 0; i < kN; ++i) {
-      x[i] = p[constraint.particles[i]];
-      weight[i] = w[constraint.particles[i]];
-    }
-    const Projection<kN> r = projectXpbd(evaluate(x, constraint), weight, params, compliant ? lambda[c] : Real(0));
-    if (compliant) lambda[c] += r.deltaLambda;
-    for (std::size_t i = 0; i < kN; ++i) p[constraint.particles[i]] += r.dx[i];
+    const Real deltaLambda = apply(constraints[c], p, w, params, compliant ? lambda[c] : Real(0));
+    if (compliant) lambda[c] += deltaLambda;
   }
 }
 
@@ -114,6 +126,16 @@ void projectConstraints(ConstraintSet& constraints, Particles& particles,
         }
       }
       projectPlanes(constraints, particles);
+    }
+    // Incompressibility passes: extra sweeps over the volume constraints alone, so the
+    // constraint the wall must keep best is also the last one satisfied.
+    for (int pass = 0; pass < settings.volumePasses; ++pass) {
+      for (std::size_t colour = 0; colour < schedule.colourCount(); ++colour) {
+        const auto begin = static_cast<std::ptrdiff_t>(schedule.colourStart[colour]);
+        const auto end = static_cast<std::ptrdiff_t>(schedule.colourStart[colour + 1]);
+#pragma omp for schedule(dynamic, 1)
+        for (std::ptrdiff_t k = begin; k < end; ++k) projectBlock(constraints.volumes, schedule.blockOrder[k], particles, volume);
+      }
     }
   }
 }

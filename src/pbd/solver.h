@@ -21,6 +21,7 @@ namespace hs::pbd {
 struct SolverSettings {
   Real dt = Real(0.005);       // s
   int iterations = 10;         // solverIterations
+  int volumePasses = 0;        // extra sweeps of the volume constraints after the iterations
   Vec3 gravity = Vec3(0, Real(-9.81), 0);
   // Share of gravity each particle kind feels, indexed by ParticleKind (Tissue, Fluid).
   std::array<Real, 2> gravityScale{1, 1};

@@ -59,7 +59,8 @@ TEST(ScenarioFile, HeartOnlyBuiltinHasTheThesisValues) {
   EXPECT_FALSE(s.description.empty());
   EXPECT_EQ(s.simulation.dt, Real(0.005));
   EXPECT_EQ(s.simulation.duration, Real(2.0));
-  EXPECT_EQ(s.simulation.iterations, 10);
+  EXPECT_EQ(s.simulation.iterations, 4);
+  EXPECT_EQ(s.simulation.volumePasses, 4);
   EXPECT_EQ(s.simulation.gravity, Vec3(0, Real(-9.81), 0));
   EXPECT_TRUE(s.cycle.enabled);
   EXPECT_EQ(s.cycle.mode, TimingMode::Thesis);
@@ -177,6 +178,7 @@ std::vector<KeyCase> everyKeyCase() {
       {"model.outflow_vessel_length", "1.3",
        [](const Scenario& s) { return s.geometry.outflowVesselLength == Real(1.3); }},
       {"model.resolution", "2", [](const Scenario& s) { return s.geometry.resolution == Real(2); }},
+      {"simulation.volume_passes", "3", [](const Scenario& s) { return s.simulation.volumePasses == 3; }},
       {"tissue.stiffness", "0.75", [](const Scenario& s) { return s.tissue.stiffness == Real(0.75); }},
       {"tissue.volume_stiffness", "0.25", [](const Scenario& s) { return s.tissue.volumeStiffness == Real(0.25); }},
       {"tissue.volume_compliance", "1e-6",

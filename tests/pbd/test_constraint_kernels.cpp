@@ -1,4 +1,5 @@
-// Every kernel's gradient against central finite differences, and one projection reduces |C|.
+// Every kernel's gradient against central finite differences, and one projection zeroes the
+// linearised constraint and reduces |C|.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -7,6 +8,42 @@
 
 namespace hs::pbd {
 namespace {
+
+// The kernels as functions of an array of points, so one checker serves them all.
+template <std::size_t N>
+struct Eval {
+  Real value;
+  std::array<Vec3, N> gradient;
+};
+template <std::size_t N>
+struct Corr {
+  std::array<Vec3, N> dx;
+};
+
+Eval<4> tet(const std::array<Vec3, 4>& x, Real rest) {
+  const TetVolumeEval c = evaluateTetVolume(x[0], x[1], x[2], x[3], rest);
+  return {c.value, {c.g0, c.g1, c.g2, c.g3}};
+}
+Eval<3> tri(const std::array<Vec3, 3>& x, Real rest) {
+  const TriangleAreaEval c = evaluateTriangleArea(x[0], x[1], x[2], rest);
+  return {c.value, {c.g0, c.g1, c.g2}};
+}
+Eval<2> dist(const std::array<Vec3, 2>& x, Real rest) {
+  const DistanceEval c = evaluateDistance(x[0], x[1], rest);
+  return {c.value, {c.g0, c.g1}};
+}
+Corr<4> tetProject(const std::array<Vec3, 4>& x, const std::array<Real, 4>& w, Real rest, ProjectionParams p) {
+  const Correction4 r = projectTetVolume(x[0], x[1], x[2], x[3], w[0], w[1], w[2], w[3], rest, p, 0);
+  return {{r.dx0, r.dx1, r.dx2, r.dx3}};
+}
+Corr<3> triProject(const std::array<Vec3, 3>& x, const std::array<Real, 3>& w, Real rest, ProjectionParams p) {
+  const Correction3 r = projectTriangleArea(x[0], x[1], x[2], w[0], w[1], w[2], rest, p, 0);
+  return {{r.dx0, r.dx1, r.dx2}};
+}
+Corr<2> distProject(const std::array<Vec3, 2>& x, const std::array<Real, 2>& w, Real rest, ProjectionParams p) {
+  const Correction2 r = projectDistance(x[0], x[1], w[0], w[1], rest, p, 0);
+  return {{r.dx0, r.dx1}};
+}
 
 template <std::size_t N>
 std::array<Vec3, N> randomPoints(std::mt19937& rng) {
@@ -17,9 +54,9 @@ std::array<Vec3, N> randomPoints(std::mt19937& rng) {
 }
 
 // Central differences of C with step h; compares with the analytic gradient.
-template <std::size_t N, class Eval>
-void expectGradientMatchesFiniteDifferences(const std::array<Vec3, N>& x, Eval eval) {
-  const ConstraintEval<N> analytic = eval(x);
+template <std::size_t N, class EvalFn>
+void expectGradientMatchesFiniteDifferences(const std::array<Vec3, N>& x, EvalFn eval) {
+  const Eval<N> analytic = eval(x);
   const Real h = std::is_same_v<Real, float> ? Real(2e-3) : Real(1e-6);
   const Real tolerance = std::is_same_v<Real, float> ? Real(5e-3) : Real(1e-7);
   Real scale = 1;
@@ -31,34 +68,27 @@ void expectGradientMatchesFiniteDifferences(const std::array<Vec3, N>& x, Eval e
       plus[i][d] += h;
       minus[i][d] -= h;
       const Real numeric = (eval(plus).value - eval(minus).value) / (2 * h);
-      EXPECT_NEAR(analytic.gradient[i][d], numeric, tolerance * scale)
-          << "particle " << i << " axis " << d;
+      EXPECT_NEAR(analytic.gradient[i][d], numeric, tolerance * scale) << "particle " << i << " axis " << d;
     }
   }
 }
 
 TEST(ConstraintKernels, TetVolumeGradientMatchesFiniteDifferences) {
   std::mt19937 rng(1);
-  for (int trial = 0; trial < 50; ++trial) {
-    expectGradientMatchesFiniteDifferences<4>(
-        randomPoints<4>(rng), [](const auto& x) { return evaluateTetVolume(x, Real(0.1)); });
-  }
+  for (int trial = 0; trial < 50; ++trial)
+    expectGradientMatchesFiniteDifferences<4>(randomPoints<4>(rng), [](const auto& x) { return tet(x, Real(0.1)); });
 }
 
 TEST(ConstraintKernels, TriangleAreaGradientMatchesFiniteDifferences) {
   std::mt19937 rng(2);
-  for (int trial = 0; trial < 50; ++trial) {
-    expectGradientMatchesFiniteDifferences<3>(
-        randomPoints<3>(rng), [](const auto& x) { return evaluateTriangleArea(x, Real(0.2)); });
-  }
+  for (int trial = 0; trial < 50; ++trial)
+    expectGradientMatchesFiniteDifferences<3>(randomPoints<3>(rng), [](const auto& x) { return tri(x, Real(0.2)); });
 }
 
 TEST(ConstraintKernels, DistanceGradientMatchesFiniteDifferences) {
   std::mt19937 rng(3);
-  for (int trial = 0; trial < 50; ++trial) {
-    expectGradientMatchesFiniteDifferences<2>(
-        randomPoints<2>(rng), [](const auto& x) { return evaluateDistance(x, Real(0.5)); });
-  }
+  for (int trial = 0; trial < 50; ++trial)
+    expectGradientMatchesFiniteDifferences<2>(randomPoints<2>(rng), [](const auto& x) { return dist(x, Real(0.5)); });
 }
 
 TEST(ConstraintKernels, PlaneGradientMatchesFiniteDifferences) {
@@ -66,27 +96,26 @@ TEST(ConstraintKernels, PlaneGradientMatchesFiniteDifferences) {
   const Plane plane{Vec3(1, 2, 2).normalized(), Real(0.3)};
   for (int trial = 0; trial < 20; ++trial) {
     expectGradientMatchesFiniteDifferences<1>(randomPoints<1>(rng), [&](const auto& x) {
-      return evaluatePlaneCollision(x[0], plane, Real(0.05));
+      return Eval<1>{evaluatePlaneCollision(x[0], plane, Real(0.05)), {plane.normal}};
     });
   }
 }
 
 TEST(ConstraintKernels, TetVolumeValueIsSignedVolumeMinusRest) {
   const std::array<Vec3, 4> x{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
-  EXPECT_NEAR(evaluateTetVolume(x, 0).value, Real(1.0 / 6.0), Real(1e-7));
-  const std::array<Vec3, 4> flipped{x[0], x[2], x[1], x[3]};
-  EXPECT_NEAR(evaluateTetVolume(flipped, 0).value, Real(-1.0 / 6.0), Real(1e-7));
+  EXPECT_NEAR(tet(x, 0).value, Real(1.0 / 6.0), Real(1e-7));
+  EXPECT_NEAR(tet({x[0], x[2], x[1], x[3]}, 0).value, Real(-1.0 / 6.0), Real(1e-7));
 }
 
 // A full-stiffness, zero-compliance projection zeroes the linearised constraint
 // (thesis eq. 3.1: C + grad C . dx = 0) and, for these smooth constraints, reduces |C|.
-template <std::size_t N, class Eval>
-void expectProjectionReducesViolation(std::array<Vec3, N> x, const std::array<Real, N>& w,
-                                      Eval eval) {
-  const ConstraintEval<N> c = eval(x);
+template <std::size_t N, class EvalFn, class ProjectFn>
+void expectProjectionReducesViolation(std::array<Vec3, N> x, const std::array<Real, N>& w, EvalFn eval,
+                                      ProjectFn project) {
+  const Eval<N> c = eval(x);
   const Real before = std::abs(c.value);
   ASSERT_GT(before, Real(1e-3));
-  const Projection<N> r = projectXpbd(c, w, ProjectionParams{0, 1}, 0);
+  const Corr<N> r = project(x, w, ProjectionParams{0, 1});
   Real linearised = c.value;
   for (std::size_t i = 0; i < N; ++i) linearised += c.gradient[i].dot(r.dx[i]);
   EXPECT_NEAR(linearised, 0, 1e-5 * std::max(Real(1), before));
@@ -97,51 +126,60 @@ void expectProjectionReducesViolation(std::array<Vec3, N> x, const std::array<Re
 TEST(ConstraintKernels, OneProjectionReducesViolation) {
   std::mt19937 rng(5);
   for (int trial = 0; trial < 20; ++trial) {
-    expectProjectionReducesViolation<4>(randomPoints<4>(rng), {1, 2, Real(0.5), 1}, [](const auto& x) {
-      return evaluateTetVolume(x, Real(0.05));
-    });
-    expectProjectionReducesViolation<3>(randomPoints<3>(rng), {1, 1, 3}, [](const auto& x) {
-      return evaluateTriangleArea(x, Real(0.3));
-    });
-    expectProjectionReducesViolation<2>(randomPoints<2>(rng), {1, Real(0.25)}, [](const auto& x) {
-      return evaluateDistance(x, Real(0.4));
-    });
+    expectProjectionReducesViolation<4>(
+        randomPoints<4>(rng), {1, 2, Real(0.5), 1}, [](const auto& x) { return tet(x, Real(0.05)); },
+        [](const auto& x, const auto& w, ProjectionParams p) { return tetProject(x, w, Real(0.05), p); });
+    expectProjectionReducesViolation<3>(
+        randomPoints<3>(rng), {1, 1, 3}, [](const auto& x) { return tri(x, Real(0.3)); },
+        [](const auto& x, const auto& w, ProjectionParams p) { return triProject(x, w, Real(0.3), p); });
+    expectProjectionReducesViolation<2>(
+        randomPoints<2>(rng), {1, Real(0.25)}, [](const auto& x) { return dist(x, Real(0.4)); },
+        [](const auto& x, const auto& w, ProjectionParams p) { return distProject(x, w, Real(0.4), p); });
   }
 }
 
 TEST(ConstraintKernels, PinnedParticlesDoNotMoveAndMomentumIsKept) {
-  std::array<Vec3, 2> x{Vec3(0, 0, 0), Vec3(2, 0, 0)};
-  const auto c = evaluateDistance(x, 1);
-  const auto pinned = projectXpbd<2>(c, {0, 1}, ProjectionParams{0, 1}, 0);
-  EXPECT_EQ(pinned.dx[0], Vec3::Zero());
-  EXPECT_NEAR(pinned.dx[1].x(), -1, 1e-6);
+  const Vec3 a(0, 0, 0), b(2, 0, 0);
+  const Correction2 pinned = projectDistance(a, b, 0, 1, 1, ProjectionParams{0, 1}, 0);
+  EXPECT_EQ(pinned.dx0, Vec3::Zero());
+  EXPECT_NEAR(pinned.dx1.x(), -1, 1e-6);
   // Equal masses: corrections are equal and opposite (no net momentum change).
-  const auto both = projectXpbd<2>(c, {1, 1}, ProjectionParams{0, 1}, 0);
-  EXPECT_NEAR((both.dx[0] + both.dx[1]).norm(), 0, 1e-7);
+  const Correction2 both = projectDistance(a, b, 1, 1, 1, ProjectionParams{0, 1}, 0);
+  EXPECT_NEAR((both.dx0 + both.dx1).norm(), 0, 1e-7);
+  const std::array<Vec3, 4> x{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+  const Correction4 t = projectTetVolume(x[0], x[1], x[2], x[3], 1, 1, 1, 1, Real(0.3), ProjectionParams{0, 1}, 0);
+  EXPECT_NEAR((t.dx0 + t.dx1 + t.dx2 + t.dx3).norm(), 0, 1e-6);
 }
 
 TEST(ConstraintKernels, StiffnessScalesThePbdCorrection) {
-  std::array<Vec3, 2> x{Vec3(0, 0, 0), Vec3(2, 0, 0)};
-  const auto c = evaluateDistance(x, 1);
-  const auto full = projectXpbd<2>(c, {1, 1}, ProjectionParams{0, 1}, 0);
-  const auto half = projectXpbd<2>(c, {1, 1}, ProjectionParams{0, Real(0.5)}, 0);
-  EXPECT_NEAR(half.dx[1].x(), Real(0.5) * full.dx[1].x(), 1e-7);
+  const Vec3 a(0, 0, 0), b(2, 0, 0);
+  const Correction2 full = projectDistance(a, b, 1, 1, 1, ProjectionParams{0, 1}, 0);
+  const Correction2 half = projectDistance(a, b, 1, 1, 1, ProjectionParams{0, Real(0.5)}, 0);
+  EXPECT_NEAR(half.dx1.x(), Real(0.5) * full.dx1.x(), 1e-7);
 }
 
 TEST(ConstraintKernels, ComplianceSoftensAndLambdaAccumulates) {
   // XPBD with compliance alpha: after converging, C = -alphaTilde * lambda (a spring).
-  std::array<Vec3, 2> x{Vec3(0, 0, 0), Vec3(2, 0, 0)};
-  const std::array<Real, 2> w{0, 1};
+  Vec3 a(0, 0, 0), b(2, 0, 0);
   const ProjectionParams params{Real(1), Real(1)};
   Real lambda = 0;
   for (int i = 0; i < 100; ++i) {
-    const auto r = projectXpbd<2>(evaluateDistance(x, 1), w, params, lambda);
+    const Correction2 r = projectDistance(a, b, 0, 1, 1, params, lambda);
     lambda += r.deltaLambda;
-    x[1] += r.dx[1];
+    b += r.dx1;
   }
-  const Real c = evaluateDistance(x, 1).value;
+  const Real c = evaluateDistance(a, b, 1).value;
   EXPECT_NEAR(c, -params.alphaTilde * lambda, 1e-5);
   EXPECT_NEAR(c, Real(0.5), 1e-4);  // w = 1, alphaTilde = 1: half of the violation remains
+}
+
+TEST(ConstraintKernels, DegenerateConfigurationsDoNotMove) {
+  const Vec3 p(1, 1, 1);
+  const Correction3 collapsed = projectTriangleArea(p, p, p, 1, 1, 1, Real(0.5), ProjectionParams{0, 1}, 0);
+  EXPECT_TRUE(collapsed.dx0.allFinite());
+  EXPECT_EQ(collapsed.dx1, Vec3::Zero());
+  const Correction2 allPinned = projectDistance(Vec3::Zero(), Vec3::UnitX(), 0, 0, 2, ProjectionParams{0, 1}, 0);
+  EXPECT_EQ(allPinned.dx1, Vec3::Zero());
 }
 
 TEST(ConstraintKernels, PlaneCollisionPushesOutOnlyWhenPenetrating) {
