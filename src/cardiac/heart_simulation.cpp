@@ -17,6 +17,7 @@ pbd::SoftBodySettings softBodySettings(const TissueSettings& tissue) {
   s.areaCompliance = tissue.areaCompliance;
   s.edgeCompliance = tissue.edgeCompliance;
   s.edges = tissue.edges;
+  s.areas = tissue.areas;
   return s;
 }
 

@@ -28,6 +28,7 @@ struct TissueSettings {
   Real areaCompliance = 0;
   Real edgeCompliance = 0;
   bool edges = true;       // edge distance constraints (volume and area alone do not hold a shape)
+  bool areas = true;       // surface triangle area constraints (thesis 4.1.2)
   // Whether gravity acts on the wall. In the body the heart's weight is carried by the
   // pericardium and the great vessels, so by default only the blood feels gravity.
   bool gravity = false;

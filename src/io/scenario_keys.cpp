@@ -78,6 +78,7 @@ std::vector<KeySpec> buildKeyTable() {
               "XPBD compliance of the surface area constraints (0 = plain PBD)."),
       realKey("tissue.edge_compliance", HS_FIELD(tissue.edgeCompliance), ge(0), "",
               "XPBD compliance of the edge distance constraints (0 = plain PBD)."),
+      boolKey("tissue.areas", HS_FIELD(tissue.areas), "Surface triangle area constraints on (thesis 4.1.2)."),
       boolKey("tissue.edges", HS_FIELD(tissue.edges),
               "Edge distance constraints on (volume and area alone do not hold the shape)."),
       boolKey("tissue.gravity", HS_FIELD(tissue.gravity),

@@ -10,28 +10,13 @@
 namespace hs::pbd {
 namespace {
 
-// Appends each constraint's extent: the largest distance between two of its particles.
-template <class Constraint>
-void collectExtents(const ConstraintGroup<Constraint>& group, const std::vector<Vec3>& x,
-                    std::vector<Real>& extents) {
-  for (const Constraint& c : group.constraints) {
-    Real extent = 0;
-    for (Index a : c.particles)
-      for (Index b : c.particles) extent = std::max(extent, (x[a] - x[b]).norm());
-    extents.push_back(extent);
-  }
-}
-
-// Stable sort of a group's constraints by the block of their first particle.
-template <class Constraint>
-void sortByBlock(ConstraintGroup<Constraint>& group, const std::vector<Index>& particleBlock,
-                 std::size_t blockCount) {
+// Stable sort of a group's constraints by their block.
+template <class Constraint, class BlockOf>
+void sortByBlock(ConstraintGroup<Constraint>& group, const BlockOf& blockOf, std::size_t blockCount) {
   std::stable_sort(group.constraints.begin(), group.constraints.end(),
-                   [&](const Constraint& a, const Constraint& b) {
-                     return particleBlock[a.particles[0]] < particleBlock[b.particles[0]];
-                   });
+                   [&](const Constraint& a, const Constraint& b) { return blockOf(a) < blockOf(b); });
   group.blockStart.assign(blockCount + 1, 0);
-  for (const Constraint& c : group.constraints) ++group.blockStart[particleBlock[c.particles[0]] + 1];
+  for (const Constraint& c : group.constraints) ++group.blockStart[blockOf(c) + 1];
   for (std::size_t b = 1; b <= blockCount; ++b) group.blockStart[b] += group.blockStart[b - 1];
   group.lambda.assign(group.constraints.size(), Real(0));
   // Inside a block, order the constraints by a local greedy colouring, so that neighbours in
@@ -66,13 +51,38 @@ void sortByBlock(ConstraintGroup<Constraint>& group, const std::vector<Index>& p
 }
 
 // For every particle, the blocks whose constraints touch it.
-template <class Constraint>
-void collectTouches(const ConstraintGroup<Constraint>& group, const std::vector<Index>& particleBlock,
+template <class Constraint, class BlockOf>
+void collectTouches(const ConstraintGroup<Constraint>& group, const BlockOf& blockOf,
                     std::vector<std::vector<Index>>& blocksTouching) {
   for (const Constraint& c : group.constraints) {
-    const Index owner = particleBlock[c.particles[0]];
+    const Index owner = blockOf(c);
     for (Index p : c.particles) blocksTouching[p].push_back(owner);
   }
+}
+
+// Recursive bisection: splits `ids` at the median along the axis of largest extent until
+// there are `parts` regions; region ids are assigned in the order the halves are visited.
+void bisect(std::vector<Index> ids, const std::vector<Vec3>& x, std::size_t parts, Index& nextRegion,
+            std::vector<Index>& region) {
+  if (parts <= 1 || ids.size() < 2) {
+    for (Index i : ids) region[i] = nextRegion;
+    ++nextRegion;
+    return;
+  }
+  Vec3 lower = Vec3::Constant(std::numeric_limits<Real>::max());
+  Vec3 upper = -lower;
+  for (Index i : ids) {
+    lower = lower.cwiseMin(x[i]);
+    upper = upper.cwiseMax(x[i]);
+  }
+  Eigen::Index axis = 0;
+  (upper - lower).maxCoeff(&axis);
+  std::sort(ids.begin(), ids.end(), [&](Index a, Index b) {
+    return x[a][axis] < x[b][axis] || (x[a][axis] == x[b][axis] && a < b);
+  });
+  const auto half = ids.begin() + static_cast<std::ptrdiff_t>(ids.size() / 2);
+  bisect(std::vector<Index>(ids.begin(), half), x, parts / 2, nextRegion, region);
+  bisect(std::vector<Index>(half, ids.end()), x, parts - parts / 2, nextRegion, region);
 }
 
 }  // namespace
@@ -94,47 +104,52 @@ std::vector<Index> greedyColouring(const std::vector<std::vector<Index>>& adjace
 
 BlockSchedule buildBlockSchedule(ConstraintSet& constraints, const std::vector<Vec3>& positions) {
   BlockSchedule schedule;
-  std::vector<Real> extents;
-  collectExtents(constraints.distances, positions, extents);
-  collectExtents(constraints.areas, positions, extents);
-  collectExtents(constraints.volumes, positions, extents);
-  // Cells of kCellsPerExtent typical constraint extents (the median): most blocks then
-  // conflict only with their neighbours, and there are enough blocks per colour to share
-  // between threads. Conflicts are computed exactly, so any cell size is correct.
-  constexpr Real kCellsPerExtent = 2;
-  Real typical = 0;
-  if (!extents.empty()) {
-    auto middle = extents.begin() + static_cast<std::ptrdiff_t>(extents.size() / 2);
-    std::nth_element(extents.begin(), middle, extents.end());
-    typical = *middle;
-  }
-  schedule.cellSize = typical > Real(0) ? kCellsPerExtent * typical : Real(1);
-  Vec3 lower = Vec3::Constant(std::numeric_limits<Real>::max());
-  for (const Vec3& x : positions) lower = lower.cwiseMin(x);
+  // Regions: the particles split into a fixed number of spatial parts, independent of the
+  // thread count (so the result is too). A constraint inside one region belongs to that
+  // region's block; a constraint across regions belongs to the seam block of the regions it
+  // touches. Region blocks never share a particle and run in parallel; the seams, a small
+  // share, follow in later colours.
+  constexpr std::size_t kParticlesPerRegion = 4096;
+  std::size_t regions = 2;
+  while (regions * kParticlesPerRegion < positions.size()) regions *= 2;
+  std::vector<Index> region(positions.size(), 0);
+  std::vector<Index> all(positions.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<Index>(i);
+  Index nextRegion = 0;
+  bisect(all, positions, regions, nextRegion, region);
 
-  // Block ids in the sorted order of non-empty cells: deterministic.
-  std::vector<std::array<long, 3>> cellOf(positions.size());
-  std::map<std::array<long, 3>, Index> cellIds;
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    const Vec3 c = (positions[i] - lower) / schedule.cellSize;
-    cellOf[i] = {std::lround(std::floor(c.x())), std::lround(std::floor(c.y())), std::lround(std::floor(c.z()))};
-    cellIds.emplace(cellOf[i], 0);
-  }
-  Index next = 0;
-  for (auto& [cell, id] : cellIds) id = next++;
-  schedule.blockCount = cellIds.size();
-  std::vector<Index> particleBlock(positions.size());
-  for (std::size_t i = 0; i < positions.size(); ++i) particleBlock[i] = cellIds.at(cellOf[i]);
+  // Block ids in the sorted order of their region sets: regions first, then seams.
+  std::map<std::vector<Index>, Index> blockIds;
+  auto regionSet = [&](const auto& c) {
+    std::vector<Index> set;
+    for (Index p : c.particles) set.push_back(region[p]);
+    std::sort(set.begin(), set.end());
+    set.erase(std::unique(set.begin(), set.end()), set.end());
+    return set;
+  };
+  auto collectSets = [&](const auto& group) {
+    for (const auto& c : group.constraints) blockIds.emplace(regionSet(c), 0);
+  };
+  collectSets(constraints.distances);
+  collectSets(constraints.areas);
+  collectSets(constraints.volumes);
+  std::vector<std::vector<Index>> sets;
+  for (const auto& [set, id] : blockIds) sets.push_back(set);
+  std::stable_sort(sets.begin(), sets.end(), [](const auto& a, const auto& b) { return a.size() < b.size(); });
+  for (std::size_t i = 0; i < sets.size(); ++i) blockIds[sets[i]] = static_cast<Index>(i);
+  schedule.blockCount = sets.size();
+  schedule.regionCount = regions;
+  auto blockOf = [&](const auto& c) { return blockIds.at(regionSet(c)); };
 
-  sortByBlock(constraints.distances, particleBlock, schedule.blockCount);
-  sortByBlock(constraints.areas, particleBlock, schedule.blockCount);
-  sortByBlock(constraints.volumes, particleBlock, schedule.blockCount);
+  sortByBlock(constraints.distances, blockOf, schedule.blockCount);
+  sortByBlock(constraints.areas, blockOf, schedule.blockCount);
+  sortByBlock(constraints.volumes, blockOf, schedule.blockCount);
 
   // Block conflict graph: blocks that touch a common particle.
   std::vector<std::vector<Index>> blocksTouching(positions.size());
-  collectTouches(constraints.distances, particleBlock, blocksTouching);
-  collectTouches(constraints.areas, particleBlock, blocksTouching);
-  collectTouches(constraints.volumes, particleBlock, blocksTouching);
+  collectTouches(constraints.distances, blockOf, blocksTouching);
+  collectTouches(constraints.areas, blockOf, blocksTouching);
+  collectTouches(constraints.volumes, blockOf, blocksTouching);
   std::vector<std::vector<Index>> adjacency(schedule.blockCount);
   for (auto& blocks : blocksTouching) {
     std::sort(blocks.begin(), blocks.end());

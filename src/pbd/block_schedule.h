@@ -1,15 +1,18 @@
 #pragma once
-// Parallel Gauss-Seidel by graph colouring of spatial blocks.
+// Parallel Gauss-Seidel by graph colouring of blocks of constraints.
 //
-// Particles are binned into cubic cells (blocks) at least twice as wide as the largest
-// constraint; each constraint belongs to the block of its first particle. Two blocks conflict
-// when their constraints share a particle; a greedy colouring of the block conflict graph
-// gives a few colours (about 8 on a grid) whose blocks are independent. An iteration visits
-// the colours in order; the blocks of one colour run in parallel, and inside a block the
-// constraints are projected sequentially (Gauss-Seidel). Because blocks of one colour touch
-// disjoint particles, the result does not depend on the number of threads, bitwise.
-// Compared with colouring single constraints (~50 colours on a tet mesh, one barrier each),
-// threads meet far less often, which is what a small mesh on two cores needs.
+// The particles are split by recursive bisection into a fixed number of spatial regions (a
+// power of two, from the particle count, never from the thread count). A constraint whose
+// particles all lie in one region belongs to that region's block; one that crosses regions
+// belongs to the seam block of the set of regions it touches. Two blocks conflict when their
+// constraints share a particle; a greedy colouring of the block conflict graph puts all
+// region blocks in the first colour (they share no particle by construction) and the seams in
+// a few more. An iteration visits the colours in order; the blocks of one colour run in
+// parallel, and inside a block the constraints are projected sequentially (Gauss-Seidel).
+// Because blocks of one colour touch disjoint particles, the result does not depend on the
+// number of threads, bitwise. Threads meet once per colour: a handful of times per sweep,
+// against ~50 when single constraints are coloured, which is what a small mesh on two cores
+// needs.
 #include <vector>
 
 #include "pbd/types.h"
@@ -22,7 +25,7 @@ struct BlockSchedule {
   std::vector<Index> blockOrder;          // block ids grouped by colour
   std::vector<std::size_t> colourStart{0};  // colour k spans blockOrder[colourStart[k], colourStart[k+1])
   std::size_t blockCount = 0;
-  Real cellSize = 0;
+  std::size_t regionCount = 0;  // spatial regions; the other blocks are seams between them
 
   [[nodiscard]] std::size_t colourCount() const { return colourStart.size() - 1; }
 };

@@ -16,7 +16,7 @@ Index addSoftBody(Particles& particles, ConstraintSet& constraints, const TetMes
     const Real w = mass[i] > Real(0) ? Real(1) / mass[i] : Real(0);
     particles.add(mesh.vertices[i], w, ParticleKind::Tissue);
   }
-  for (const Triangle& f : surface) {
+  for (const Triangle& f : settings.areas ? surface : std::vector<Triangle>{}) {
     const Vec3& a = mesh.vertices[f[0]];
     const Real area = Real(0.5) * (mesh.vertices[f[1]] - a).cross(mesh.vertices[f[2]] - a).norm();
     constraints.areas.constraints.push_back({{first + f[0], first + f[1], first + f[2]}, area});

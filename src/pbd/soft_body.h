@@ -18,6 +18,7 @@ struct SoftBodySettings {
   Real areaCompliance = 0;
   Real edgeCompliance = 0;
   bool edges = true;
+  bool areas = true;  // area constraints on the surface triangles
 };
 
 // Appends the mesh's vertices as Tissue particles and its constraints to `constraints`.

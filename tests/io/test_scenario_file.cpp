@@ -187,6 +187,7 @@ std::vector<KeyCase> everyKeyCase() {
        [](const Scenario& s) { return s.tissue.areaCompliance == Real(2e-6); }},
       {"tissue.edge_compliance", "3e-6",
        [](const Scenario& s) { return s.tissue.edgeCompliance == Real(3e-6); }},
+      {"tissue.areas", "false", [](const Scenario& s) { return !s.tissue.areas; }},
       {"tissue.edges", "false", [](const Scenario& s) { return !s.tissue.edges; }},
       {"tissue.gravity", "true", [](const Scenario& s) { return s.tissue.gravity; }},
       {"tissue.damping", "0.5", [](const Scenario& s) { return s.tissue.damping == Real(0.5); }},

@@ -59,9 +59,24 @@ TEST(Solver, BlockColouringGivesIndependentBlocksAndKeepsEveryConstraint) {
   EXPECT_EQ(w.constraints.distances.blockStart.back(), uniqueEdges(mesh.tets).size());
   EXPECT_EQ(w.constraints.schedule.blockOrder.size(), w.constraints.schedule.blockCount);
   expectBlocksOfAColourAreIndependent(w.constraints);
-  EXPECT_GT(w.constraints.schedule.blockCount, 8u);
-  // A grid of blocks needs few colours: that is the point of colouring blocks.
-  EXPECT_LE(w.constraints.schedule.colourCount(), 27u);
+  // Two regions (one colour, run side by side) and the seam between them (one more colour).
+  EXPECT_EQ(w.constraints.schedule.regionCount, 2u);
+  EXPECT_EQ(w.constraints.schedule.blockCount, 3u);
+  EXPECT_EQ(w.constraints.schedule.colourCount(), 2u);
+  EXPECT_EQ(w.constraints.schedule.colourStart[1], 2u);
+}
+
+TEST(Solver, LargerBodiesGetMoreRegionsAndStayIndependent) {
+  const World w = makeBoxWorld(24);  // 15,625 particles
+  EXPECT_EQ(w.constraints.schedule.regionCount, 4u);
+  expectBlocksOfAColourAreIndependent(w.constraints);
+  // The seams are a small share of the work.
+  const auto& v = w.constraints.volumes;
+  const auto& s = w.constraints.schedule;
+  std::size_t inRegions = 0;
+  for (std::size_t k = s.colourStart[0]; k < s.colourStart[1]; ++k)
+    inRegions += v.blockStart[s.blockOrder[k] + 1] - v.blockStart[s.blockOrder[k]];
+  EXPECT_GT(double(inRegions), 0.8 * double(v.size()));
 }
 
 TEST(Solver, GreedyColouringIsProper) {
