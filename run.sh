@@ -7,6 +7,6 @@ cd "$(dirname "$0")"
 scripts/install-deps.sh
 scripts/build.sh release
 if [ $# -eq 0 ]; then
-  set -- run heart-only --out results
+  set -- run heart-only --out results/heart-only
 fi
 exec build/release/apps/heartsim "$@"
