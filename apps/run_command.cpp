@@ -189,6 +189,7 @@ int runCommand(const RunOptions& options) {
   }
 
   const cardiac::TissueStats finalTissue = sim.tissueStats();
+  const pbd::MeshQuality quality = pbd::measureQuality(sim.model().mesh);
   nlohmann::ordered_json report;
   report["scenario"] = scenario.name;
   report["steps"] = steps;
@@ -209,6 +210,8 @@ int runCommand(const RunOptions& options) {
       {"volume_error_mean", steps > 0 ? stats.volumeErrorMeanSum / double(steps) : 0.0},
       {"inverted_tets", finalTissue.invertedTets},
       {"rest_deviation_final_rel", sim.restDeviationRelative()},
+      {"min_dihedral_deg", quality.minDihedralDeg},
+      {"max_aspect_ratio", quality.maxAspectRatio},
   };
   nlohmann::ordered_json beatList = nlohmann::json::array();
   for (const auto& b : beats.beats()) {

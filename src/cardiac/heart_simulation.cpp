@@ -2,6 +2,7 @@
 
 #include <cassert>
 #include <cmath>
+#include <stdexcept>
 
 #include "pbd/soft_body.h"
 
@@ -34,8 +35,17 @@ Index buildWall(const Scenario& scenario, const LvModel& model, pbd::Particles& 
 
 }  // namespace
 
+namespace {
+// Blood (the PBF stage) is not simulated yet: asking for it must not be silently ignored.
+const Scenario& checkSupported(const Scenario& scenario) {
+  if (scenario.blood.enabled)
+    throw std::invalid_argument("blood.enabled: blood is not simulated in this version yet; set it to false");
+  return scenario;
+}
+}  // namespace
+
 HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
-    : m_scenario(scenario),
+    : m_scenario(checkSupported(scenario)),
       m_model(buildLvModel(scenario.geometry)),
       m_firstWallParticle(buildWall(m_scenario, m_model, m_particles, m_constraints)),
       m_cycle(scenario.cycle, m_model, m_firstWallParticle, scenario.simulation.dt) {
@@ -56,11 +66,9 @@ HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
 
 void HeartSimulation::step() {
   m_lastPhase = m_cycle.phase();
-  pbd::applyExternalForces(m_particles, m_solver);
-  pbd::predictPositions(m_particles, m_solver);
-  m_cycle.apply(m_particles.position, m_particles.predicted);
-  pbd::projectConstraints(m_constraints, m_particles, m_solver);
-  pbd::updateVelocities(m_particles, m_solver);
+  pbd::StepHooks hooks;
+  hooks.afterPrediction = [this](pbd::Particles& p) { m_cycle.apply(p.position, p.predicted); };
+  pbd::step(m_constraints, m_particles, m_solver, hooks);
   ++m_steps;
 }
 

@@ -152,11 +152,14 @@ void updateVelocities(Particles& particles, const SolverSettings& settings) {
   }
 }
 
-void step(ConstraintSet& constraints, Particles& particles, const SolverSettings& settings) {
+void step(ConstraintSet& constraints, Particles& particles, const SolverSettings& settings,
+          const StepHooks& hooks) {
   applyExternalForces(particles, settings);
   predictPositions(particles, settings);
+  if (hooks.afterPrediction) hooks.afterPrediction(particles);
   projectConstraints(constraints, particles, settings);
   updateVelocities(particles, settings);
+  if (hooks.postProcessVelocities) hooks.postProcessVelocities(particles);
 }
 
 std::uint64_t stateHash(const Particles& particles) {

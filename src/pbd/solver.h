@@ -9,6 +9,7 @@
 // velocity post-processing (line 15) belongs to the caller.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "pbd/block_schedule.h"
@@ -47,8 +48,17 @@ void projectConstraints(ConstraintSet& constraints, Particles& particles,
                         const SolverSettings& settings);
 void updateVelocities(Particles& particles, const SolverSettings& settings);
 
-// One whole step without hooks: the four phases in order.
-void step(ConstraintSet& constraints, Particles& particles, const SolverSettings& settings);
+// Work a caller inserts into a step (thesis Fig. 4.1): after prediction (the cardiac cycle
+// moving the wall; later the heart-blood coupling), and after the velocity update (Algorithm 1
+// line 15: velocity post-processing such as XSPH viscosity, thesis eq. 4.11). Empty: skipped.
+struct StepHooks {
+  std::function<void(Particles&)> afterPrediction;
+  std::function<void(Particles&)> postProcessVelocities;
+};
+
+// One whole step: the four phases in order, with the hooks between them.
+void step(ConstraintSet& constraints, Particles& particles, const SolverSettings& settings,
+          const StepHooks& hooks = {});
 
 // FNV-1a 64-bit hash of the bytes of every position and velocity: equal states, equal hashes.
 std::uint64_t stateHash(const Particles& particles);

@@ -69,5 +69,21 @@ TEST(CliErrors, OutOfRangeBeatingVertex) {
   expectBadInput(runHeartsim("run heart-only --set 'cycle.vertices=[999999]' --json", dir), {"cycle.vertices", "999999"});
 }
 
+TEST(CliErrors, BloodIsNotSilentlyIgnored) {
+  const auto dir = scratchDir("blood");
+  expectBadInput(runHeartsim("run heart-only --set blood.enabled=true --json", dir), {"blood.enabled"});
+}
+
+// A wall pushed 3 m per step folds at once: exit 3, one line saying when and where.
+TEST(CliErrors, InvalidSimulationIsExitThreeWithWhenAndWhere) {
+  const auto dir = scratchDir("invalid");
+  const CliResult r = runHeartsim("run heart-only --set cycle.beating_displace=3 --json", dir);
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  for (const char* word : {"step 1", "inverted", "tet ", "x = "})
+    EXPECT_NE(r.err.find(word), std::string::npos) << "missing '" << word << "' in: " << r.err;
+}
+
 }  // namespace
 }  // namespace hs::testing

@@ -30,7 +30,7 @@ TEST(CliRun, JsonReportHasEveryField) {
                           "state_hash", "beats"})
     EXPECT_TRUE(j.contains(key)) << key;
   for (const char* key : {"vertices", "tets", "surface_triangles", "volume_error_max", "volume_error_mean",
-                          "inverted_tets", "rest_deviation_final_rel"})
+                          "inverted_tets", "rest_deviation_final_rel", "min_dihedral_deg", "max_aspect_ratio"})
     EXPECT_TRUE(j["tissue"].contains(key)) << key;
   for (const char* key : {"volume_min_m3", "volume_max_m3", "ejection_fraction"})
     EXPECT_TRUE(j["cavity"].contains(key)) << key;

@@ -86,13 +86,17 @@ TEST(BeatClock, IrregularDiastolesAreShorterAndVary) {
   s.systoleSteps = 20;
   s.diastoleSteps = 20;
   s.irregularity = Real(0.6);
-  BeatClock clock(s, Real(0.005));
-  std::vector<int> lengths;
-  for (int i = 0; i < 2000; ++i) {
-    const Phase before = clock.phase();
-    clock.advance();
-    if (before == Phase::Systole && clock.phase() == Phase::Diastole) lengths.push_back(clock.diastoleLength());
-  }
+  auto diastoleLengths = [&s] {
+    BeatClock clock(s, Real(0.005));
+    std::vector<int> lengths;
+    for (int i = 0; i < 2000; ++i) {
+      const Phase before = clock.phase();
+      clock.advance();
+      if (before == Phase::Systole && clock.phase() == Phase::Diastole) lengths.push_back(clock.diastoleLength());
+    }
+    return lengths;
+  };
+  const std::vector<int> lengths = diastoleLengths();
   ASSERT_GT(lengths.size(), 20u);
   int shorter = 0;
   for (int l : lengths) {
@@ -103,13 +107,7 @@ TEST(BeatClock, IrregularDiastolesAreShorterAndVary) {
   EXPECT_GT(shorter, int(lengths.size()) / 2);
   EXPECT_NE(*std::min_element(lengths.begin(), lengths.end()), *std::max_element(lengths.begin(), lengths.end()));
   // Same seed, same rhythm.
-  BeatClock again(s, Real(0.005));
-  std::vector<int> repeat;
-  for (int i = 0; i < 2000; ++i) {
-    const Phase before = again.phase();
-    again.advance();
-    if (before == Phase::Systole && again.phase() == Phase::Diastole) repeat.push_back(again.diastoleLength());
-  }
+  const std::vector<int> repeat = diastoleLengths();
   EXPECT_EQ(lengths, repeat);
 }
 

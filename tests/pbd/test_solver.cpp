@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <set>
+#include <string>
 
 #include "box_mesh.h"
 #include "pbd/soft_body.h"
@@ -136,6 +137,30 @@ TEST(Solver, SameStateForOneAndTwoThreads) {
   const std::uint64_t one = run(1);
   EXPECT_EQ(one, run(2));
   EXPECT_EQ(one, run(1));
+}
+
+TEST(Solver, HooksRunAfterPredictionAndAfterTheVelocityUpdate) {
+  Particles p;
+  p.add(Vec3::Zero(), 1, ParticleKind::Fluid);
+  ConstraintSet none;
+  SolverSettings s;
+  s.gravity.setZero();
+  std::vector<std::string> order;
+  StepHooks hooks;
+  // Moving the prediction by 1 mm becomes velocity (p - x)/dt in the update.
+  hooks.afterPrediction = [&](Particles& q) {
+    order.push_back("prediction");
+    q.predicted[0].x() += Real(0.001);
+  };
+  hooks.postProcessVelocities = [&](Particles& q) {
+    order.push_back("velocity");
+    EXPECT_NEAR(q.velocity[0].x(), Real(0.001) / s.dt, 1e-4);
+    q.velocity[0].setZero();
+  };
+  step(none, p, s, hooks);
+  EXPECT_EQ(order, (std::vector<std::string>{"prediction", "velocity"}));
+  EXPECT_EQ(p.velocity[0], Vec3::Zero());
+  EXPECT_NEAR(p.position[0].x(), 0.001, 1e-7);
 }
 
 TEST(Solver, StateHashSeesEveryBit) {
