@@ -127,7 +127,7 @@ std::vector<KeySpec> buildKeyTable() {
       realKey("cycle.inconsistent.phase_offset", HS_FIELD(cycle.inconsistentPhaseOffset), between(0, 1),
               "cycles", "Their phase lag, as a fraction of a cycle."),
       // [blood]
-      boolKey("blood.enabled", HS_FIELD(blood.enabled), "Whether blood particles are simulated."),
+      boolKey("blood.enabled", HS_FIELD(blood.enabled), "Whether blood particles are simulated (not available yet: true is refused by `heartsim run`)."),
       intKey("blood.particles", HS_FIELD(blood.particles), 0, "", "Number of blood particles.", 10'000'000),
       // [output]
       boolKey("output.vtk", HS_FIELD(output.vtk), "Write VTK frames for ParaView."),
