@@ -45,10 +45,15 @@ int main(int argc, char** argv) {
     std::cerr << "heartsim: error: " << e.what() << " (see heartsim --help)\n";
     return kExitBadInput;
   }
-  if (runApp->parsed()) {
-    if (runApp->count("--duration") > 0) run.duration = duration;
-    return runCommand(run);
+  try {
+    if (runApp->parsed()) {
+      if (runApp->count("--duration") > 0) run.duration = duration;
+      return runCommand(run);
+    }
+    if (benchApp->parsed()) return benchCommand(bench);
+  } catch (const std::exception& e) {
+    std::cerr << "heartsim: error: " << e.what() << '\n';
+    return kExitFailure;
   }
-  if (benchApp->parsed()) return benchCommand(bench);
   return kExitBadInput;
 }

@@ -109,6 +109,9 @@ int runCommand(const RunOptions& options) {
   } catch (const std::invalid_argument& e) {
     std::cerr << "heartsim: error: " << options.scenario << ": " << e.what() << '\n';
     return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "heartsim: error: " << options.scenario << ": could not set up the simulation: " << e.what() << '\n';
+    return kExitFailure;
   }
   cardiac::HeartSimulation& sim = *simPtr;
   const double setupSeconds = secondsSince(setupStart);
@@ -138,7 +141,14 @@ int runCommand(const RunOptions& options) {
   };
 
   const double dt = scenario.simulation.dt;
-  const auto steps = static_cast<std::int64_t>(std::llround(double(scenario.simulation.duration) / dt));
+  const double stepCount = std::round(double(scenario.simulation.duration) / dt);
+  constexpr double kMaxSteps = 1e9;
+  if (stepCount > kMaxSteps) {
+    std::cerr << "heartsim: error: " << options.scenario << ": simulation.duration / simulation.dt = " << stepCount
+              << " steps, more than " << kMaxSteps << "; shorten the duration or lengthen dt\n";
+    return kExitBadInput;
+  }
+  const auto steps = static_cast<std::int64_t>(stepCount);
   RunStatistics stats;
   cardiac::BeatTracker beats(sim.cavityVolume());
   ProgressBar progress(static_cast<long>(steps));

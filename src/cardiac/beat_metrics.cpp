@@ -15,13 +15,14 @@ void BeatTracker::record(double time, Phase phase, double volume) {
   }
   m_lastVolume = volume;
   if (!m_open) return;
-  m_current.edv = std::max(m_current.edv, volume);
+  if (phase != Phase::Systole) m_systoleEnded = true;
   m_current.esv = std::min(m_current.esv, volume);
 }
 
 void BeatTracker::finish() {
-  if (m_open) m_beats.push_back(m_current);
+  if (m_open && m_systoleEnded) m_beats.push_back(m_current);
   m_open = false;
+  m_systoleEnded = false;
 }
 
 double BeatTracker::meanEjectionFraction() const {

@@ -1,7 +1,9 @@
 #pragma once
 // Per-beat cavity volumes and ejection fraction. A beat runs from the start of one systole to
-// the start of the next (or to the end of the run): EDV is its largest cavity volume, ESV its
-// smallest, EF = (EDV - ESV) / EDV, stroke volume SV = EDV - ESV.
+// the start of the next (or to the end of the run). EDV is the end-diastolic volume, the
+// cavity volume when its systole starts; ESV its smallest volume; SV = EDV - ESV,
+// EF = SV / EDV. A beat counts once its systole has ended: a run that stops mid-systole does
+// not report a half-ejected beat.
 #include <vector>
 
 #include "cardiac/beat_clock.h"
@@ -36,6 +38,7 @@ class BeatTracker {
   std::vector<BeatSummary> m_beats;
   BeatSummary m_current;
   bool m_open = false;
+  bool m_systoleEnded = false;  // of the beat in progress
   Phase m_previous = Phase::Rest;
   double m_lastVolume = 0;  // at the end of the previous step
 };

@@ -29,8 +29,14 @@ std::vector<Index> selectBeatingVertices(const CycleSettings& cycle, const LvMod
                                   " is out of range (the model has " + std::to_string(n) +
                                   " vertices, ids 0.." + std::to_string(n - 1) + ")");
     }
+    if (std::binary_search(model.pinned.begin(), model.pinned.end(), id)) {
+      throw std::invalid_argument("cycle.vertices: vertex " + std::to_string(id) +
+                                  " is pinned (a vessel's far end) and cannot beat");
+    }
     chosen[id] = true;
   }
+  // Pinned vertices hold the heart in place; a sphere reaching them leaves them out.
+  for (Index id : model.pinned) chosen[id] = false;
   std::vector<Index> out;
   for (std::size_t v = 0; v < n; ++v)
     if (chosen[v]) out.push_back(static_cast<Index>(v));

@@ -24,7 +24,8 @@ struct BeatingRegion {
 };
 
 // Model vertices chosen to beat: the union of segments, vertex ids and sphere; all myocardium
-// when none is given. Throws std::invalid_argument naming the key for out-of-range ids.
+// when none is given; never the pinned vessel ends. Throws std::invalid_argument naming the
+// key for out-of-range or pinned ids.
 std::vector<Index> selectBeatingVertices(const CycleSettings& cycle, const LvModel& model);
 
 // Algorithm 3: moves each particle toward `centre` by `displacement`, never past it. The

@@ -110,8 +110,23 @@ std::vector<Index> fanRing(const detail::MidSurface& s, const detail::Ring& ring
 
 }  // namespace
 
+namespace {
+LvModel buildValidatedLvModel(const LvGeometryParams& params);
+}  // namespace
+
 LvModel buildLvModel(const LvGeometryParams& params) {
   validate(params);
+  try {
+    return buildValidatedLvModel(params);
+  } catch (const std::logic_error& e) {
+    // Each parameter passed its own check, but together they leave no room for a valid mesh.
+    throw std::invalid_argument(std::string("model: these parameters give no valid mesh (") + e.what() +
+                                "); change the [model] sizes");
+  }
+}
+
+namespace {
+LvModel buildValidatedLvModel(const LvGeometryParams& params) {
   const detail::ShellDims d = makeDims(params);
   detail::MidSurface s;
   const detail::Ring rim = detail::addCup(s, d);
@@ -156,6 +171,8 @@ LvModel buildLvModel(const LvGeometryParams& params) {
   model.longAxisLength = Real(d.c + d.t);
   return model;
 }
+
+}  // namespace
 
 Real cavityVolume(const LvModel& model, const std::vector<Vec3>& positions) {
   // V = (1/6) sum (a x b) . c over the closed, outward-oriented cavity boundary.

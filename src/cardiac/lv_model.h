@@ -40,7 +40,8 @@ struct LvGeometryParams {
   Real vesselWallThickness = Real(0.12);  // (m) thin vessel walls
   Real inflowVesselLength = Real(2.0);    // (m) above the base plate
   Real outflowVesselLength = Real(2.0);   // (m)
-  // Resolution in [0.25, 8]: 1 gives the thesis-like model (~1,061 vertices, ~3,345 tets);
+  // Resolution in [0.25, 8]: 1 gives the thesis-like model (1,100 vertices, 3,237 tets at the
+  // default sizes; the thesis's has 1,061 and 3,345);
   // the element edge length is 0.21 * endoRadius / resolution, so the number of elements grows
   // roughly with resolution^2 (it is a shell one tet thick).
   Real resolution = Real(1.0);

@@ -22,8 +22,8 @@ struct TissueSettings {
   // PBD stiffness of the tet volume constraints. Myocardium is nearly incompressible, so
   // volume is held fully (1) while the shape constraints use the thesis's k.
   Real volumeStiffness = Real(1.0);
-  // XPBD compliances (inverse stiffness). 0 = plain PBD (thesis). Units: volume 1/(Pa),
-  // area m^-1 N^-1... expressed per constraint as alpha in C-units^2 / N.
+  // XPBD compliances alpha (inverse stiffness, units C^2/J): volume m^3/Pa, area m^3/N,
+  // edge m/N. 0 = plain PBD (thesis), where the stiffness k alone sets the response.
   Real volumeCompliance = 0;
   Real areaCompliance = 0;
   Real edgeCompliance = 0;

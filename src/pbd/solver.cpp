@@ -65,6 +65,18 @@ ProjectionParams paramsOf(const ConstraintGroup<Constraint>& group, Real dt) {
   return {group.compliance / (dt * dt), group.stiffness};
 }
 
+// Visits the blocks colour by colour; the blocks of one colour are shared among the threads
+// of the enclosing parallel region (which must all call this), one barrier per colour.
+template <class ProjectOneBlock>
+void sweep(const BlockSchedule& schedule, const ProjectOneBlock& projectOneBlock) {
+  for (std::size_t colour = 0; colour < schedule.colourCount(); ++colour) {
+    const auto begin = static_cast<std::ptrdiff_t>(schedule.colourStart[colour]);
+    const auto end = static_cast<std::ptrdiff_t>(schedule.colourStart[colour + 1]);
+#pragma omp for schedule(dynamic, 1)
+    for (std::ptrdiff_t k = begin; k < end; ++k) projectOneBlock(schedule.blockOrder[k]);
+  }
+}
+
 void projectPlanes(const ConstraintSet& constraints, Particles& particles) {
   if (constraints.planes.empty()) return;
   const auto n = static_cast<std::ptrdiff_t>(particles.size());
@@ -114,28 +126,18 @@ void projectConstraints(ConstraintSet& constraints, Particles& particles,
     const ProjectionParams volume = paramsOf(constraints.volumes, settings.dt);
     const BlockSchedule& schedule = constraints.schedule;
     for (int iteration = 0; iteration < settings.iterations; ++iteration) {
-      for (std::size_t colour = 0; colour < schedule.colourCount(); ++colour) {
-        const auto begin = static_cast<std::ptrdiff_t>(schedule.colourStart[colour]);
-        const auto end = static_cast<std::ptrdiff_t>(schedule.colourStart[colour + 1]);
-#pragma omp for schedule(dynamic, 1)
-        for (std::ptrdiff_t k = begin; k < end; ++k) {
-          const std::size_t block = schedule.blockOrder[k];
-          projectBlock(constraints.distances, block, particles, distance);
-          projectBlock(constraints.areas, block, particles, area);
-          projectBlock(constraints.volumes, block, particles, volume);
-        }
-      }
+      sweep(schedule, [&](std::size_t block) {
+        projectBlock(constraints.distances, block, particles, distance);
+        projectBlock(constraints.areas, block, particles, area);
+        projectBlock(constraints.volumes, block, particles, volume);
+      });
       projectPlanes(constraints, particles);
     }
     // Incompressibility passes: extra sweeps over the volume constraints alone, so the
-    // constraint the wall must keep best is also the last one satisfied.
+    // constraint the wall must keep best is also among the last satisfied; contacts stay last.
     for (int pass = 0; pass < settings.volumePasses; ++pass) {
-      for (std::size_t colour = 0; colour < schedule.colourCount(); ++colour) {
-        const auto begin = static_cast<std::ptrdiff_t>(schedule.colourStart[colour]);
-        const auto end = static_cast<std::ptrdiff_t>(schedule.colourStart[colour + 1]);
-#pragma omp for schedule(dynamic, 1)
-        for (std::ptrdiff_t k = begin; k < end; ++k) projectBlock(constraints.volumes, schedule.blockOrder[k], particles, volume);
-      }
+      sweep(schedule, [&](std::size_t block) { projectBlock(constraints.volumes, block, particles, volume); });
+      projectPlanes(constraints, particles);
     }
   }
 }

@@ -69,6 +69,18 @@ TEST(CliErrors, OutOfRangeBeatingVertex) {
   expectBadInput(runHeartsim("run heart-only --set 'cycle.vertices=[999999]' --json", dir), {"cycle.vertices", "999999"});
 }
 
+TEST(CliErrors, GeometryThatLeavesNoValidMeshIsBadInput) {
+  const auto dir = scratchDir("geometry");
+  expectBadInput(runHeartsim("run heart-only --set model.endo_long_axis=0.31 --json", dir), {"model"});
+  expectBadInput(runHeartsim("run heart-only --set model.wall_thickness=10 --json", dir), {"model"});
+}
+
+TEST(CliErrors, TooManyStepsIsBadInput) {
+  const auto dir = scratchDir("steps");
+  expectBadInput(runHeartsim("run heart-only --set simulation.dt=1e-6 --duration 36000 --json", dir),
+                 {"simulation.duration", "steps"});
+}
+
 TEST(CliErrors, BloodIsNotSilentlyIgnored) {
   const auto dir = scratchDir("blood");
   expectBadInput(runHeartsim("run heart-only --set blood.enabled=true --json", dir), {"blood.enabled"});

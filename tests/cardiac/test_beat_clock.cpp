@@ -136,5 +136,21 @@ TEST(BeatTracker, MeasuresEdvEsvAndEjectionFraction) {
   EXPECT_NEAR(tracker.meanEjectionFraction(), 0.45, 1e-12);
 }
 
+// EDV is the volume when systole starts, not the largest: a wall that overshoots its rest
+// volume while refilling does not inflate the next beat's EF. A run that stops mid-systole
+// reports no half beat.
+TEST(BeatTracker, EdvIsTheVolumeAtSystoleOnsetAndHalfBeatsDoNotCount) {
+  BeatTracker tracker(100);
+  const double volumes[] = {70, 40, 90, 110, 105, 80};
+  const Phase phases[] = {Phase::Systole, Phase::Systole, Phase::Diastole, Phase::Diastole, Phase::Diastole,
+                          Phase::Systole};
+  for (int i = 0; i < 6; ++i) tracker.record(i * 0.1, phases[i], volumes[i]);
+  tracker.finish();
+  ASSERT_EQ(tracker.beats().size(), 1u);
+  EXPECT_DOUBLE_EQ(tracker.beats()[0].edv, 100);
+  EXPECT_DOUBLE_EQ(tracker.beats()[0].esv, 40);
+  EXPECT_DOUBLE_EQ(tracker.beats()[0].ejectionFraction(), 0.6);
+}
+
 }  // namespace
 }  // namespace hs::cardiac

@@ -1,6 +1,7 @@
 // Beating-region selection, Algorithm 3's move, and the abnormal patterns against normal.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <numeric>
 
 #include "cardiac/beat_metrics.h"
@@ -54,6 +55,19 @@ TEST(BeatingSelection, OutOfRangeVertexIsAClearError) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("cycle.vertices"), std::string::npos);
   }
+}
+
+TEST(BeatingSelection, PinnedVerticesNeverBeat) {
+  ASSERT_FALSE(model().pinned.empty());
+  CycleSettings ids;
+  ids.vertices = {model().pinned.front()};
+  EXPECT_THROW(selectBeatingVertices(ids, model()), std::invalid_argument);
+  CycleSettings sphere;
+  sphere.sphereEnabled = true;
+  sphere.sphereCentre = model().mesh.vertices[model().pinned.front()];
+  sphere.sphereRadius = Real(1.0);
+  for (Index v : selectBeatingVertices(sphere, model()))
+    EXPECT_FALSE(std::binary_search(model().pinned.begin(), model().pinned.end(), v)) << v;
 }
 
 TEST(MoveTowardCentre, MovesKinematicallyWithoutOvershoot) {

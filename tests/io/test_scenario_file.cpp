@@ -322,7 +322,8 @@ TEST(ScenarioErrors, WrongType) {
 
 TEST(ScenarioErrors, NegativeNanAndInfiniteDt) {
   expectParseError("[simulation]\ndt = -0.01\n",
-                   {"lesson.toml:2: simulation.dt: must be a finite number > 0", "(s), got -0.01"});
+                   {"lesson.toml:2: simulation.dt: must be a finite number >= 1e-06 and <= 0.1", "(s), got -0.01"});
+  expectParseError("[simulation]\ndt = 1e-45\n", {"lesson.toml:2: simulation.dt:", ">= 1e-06"});
   expectParseError("[simulation]\ndt = nan\n", {"lesson.toml:2: simulation.dt:", "got nan"});
   expectParseError("[simulation]\ndt = inf\n", {"lesson.toml:2: simulation.dt:", "got inf"});
   expectParseError("[simulation]\ndt = 0.2\n", {"lesson.toml:2: simulation.dt:", "<= 0.1"});

@@ -142,10 +142,11 @@ TEST(ConstraintKernels, OneProjectionReducesViolation) {
 // dx_i = w_i grad_i C dLambda built from the evaluated gradient.
 template <std::size_t N>
 void expectEqualsTextbookStep(const Eval<N>& c, const std::array<Real, N>& w, const Corr<N>& fused,
-                              ProjectionParams params, Real lambda) {
+                              Real fusedDeltaLambda, ProjectionParams params, Real lambda) {
   Real gradientNorm = 0;
   for (std::size_t i = 0; i < N; ++i) gradientNorm += w[i] * c.gradient[i].squaredNorm();
   const Real dl = xpbdDeltaLambda(c.value, gradientNorm, params, lambda);
+  EXPECT_NEAR(fusedDeltaLambda, dl, Real(1e-4) * std::max(Real(1), std::abs(dl)));
   for (std::size_t i = 0; i < N; ++i) {
     const Vec3 expected = (w[i] * dl) * c.gradient[i];
     EXPECT_LE((fused.dx[i] - expected).norm(), Real(1e-4) * std::max(Real(1e-3), expected.norm())) << i;
@@ -159,15 +160,15 @@ TEST(ConstraintKernels, FusedProjectionsEqualTheTextbookStep) {
     const auto x3 = randomPoints<3>(rng);
     const std::array<Real, 3> w3{1, Real(0.5), 2};
     const Correction3 t = projectTriangleArea(x3[0], x3[1], x3[2], w3[0], w3[1], w3[2], Real(0.2), params, Real(0.1));
-    expectEqualsTextbookStep<3>(tri(x3, Real(0.2)), w3, {{t.dx0, t.dx1, t.dx2}}, params, Real(0.1));
+    expectEqualsTextbookStep<3>(tri(x3, Real(0.2)), w3, {{t.dx0, t.dx1, t.dx2}}, t.deltaLambda, params, Real(0.1));
     const auto x2 = randomPoints<2>(rng);
     const std::array<Real, 2> w2{Real(0.25), 1};
     const Correction2 d = projectDistance(x2[0], x2[1], w2[0], w2[1], Real(0.5), params, Real(0.1));
-    expectEqualsTextbookStep<2>(dist(x2, Real(0.5)), w2, {{d.dx0, d.dx1}}, params, Real(0.1));
+    expectEqualsTextbookStep<2>(dist(x2, Real(0.5)), w2, {{d.dx0, d.dx1}}, d.deltaLambda, params, Real(0.1));
     const auto x4 = randomPoints<4>(rng);
     const std::array<Real, 4> w4{1, 2, Real(0.5), 1};
     const Correction4 v = projectTetVolume(x4[0], x4[1], x4[2], x4[3], w4[0], w4[1], w4[2], w4[3], Real(0.05), params, Real(0.1));
-    expectEqualsTextbookStep<4>(tet(x4, Real(0.05)), w4, {{v.dx0, v.dx1, v.dx2, v.dx3}}, params, Real(0.1));
+    expectEqualsTextbookStep<4>(tet(x4, Real(0.05)), w4, {{v.dx0, v.dx1, v.dx2, v.dx3}}, v.deltaLambda, params, Real(0.1));
   }
 }
 
