@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 scripts/install-deps.sh
-scripts/build.sh release
+scripts/build.sh release heartsim
 if [ $# -eq 0 ]; then
   set -- run heart-only --out results/heart-only
 fi

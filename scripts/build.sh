@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
-# Configures (once) and builds a CMake preset; all build output goes to stderr.
+# scripts/build.sh PRESET [TARGET...]: configures (once) and builds a CMake preset, all
+# targets or only the ones named; all build output goes to stderr.
 set -euo pipefail
 preset=${1:-release}
+shift || true
 cd "$(dirname "$0")/.."
 if [ ! -f "build/$preset/CMakeCache.txt" ]; then
   cmake --preset "$preset" >&2
 fi
-cmake --build --preset "$preset" -j "$(nproc)" >&2
+targets=()
+for t in "$@"; do targets+=(--target "$t"); done
+cmake --build --preset "$preset" -j "$(nproc)" "${targets[@]}" >&2
