@@ -92,6 +92,7 @@ BeatRecord runPattern(BeatPattern pattern, double seconds) {
   s.cycle.mode = TimingMode::Physiological;
   s.cycle.contraction = Real(0.64);  // the thesis's travel per systole: 8 x 0.08 m
   s.cycle.pattern = pattern;
+  s.geometry.resolution = Real(0.5);  // the rhythm does not depend on the mesh; keep it quick
   HeartSimulation sim(s, 1);
   BeatTracker tracker(sim.cavityVolume());
   BeatRecord record;
