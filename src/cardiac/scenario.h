@@ -11,8 +11,8 @@ namespace hs::cardiac {
 struct SimulationSettings {
   Real dt = Real(0.005);        // s (thesis section 5.1)
   Real duration = Real(2.0);    // s (thesis Table 5.5 runs)
-  int iterations = 4;     // solver iterations per step (thesis Algorithm 1, solverIterations)
-  int volumePasses = 2;   // extra sweeps of the wall's volume constraints after the iterations
+  int iterations = 3;     // solver iterations per step (thesis Algorithm 1, solverIterations)
+  int volumePasses = 3;   // extra sweeps of the wall's volume constraints after the iterations
   Vec3 gravity = Vec3(0, Real(-9.81), 0);  // m/s^2 (thesis Table 5.3)
 };
 

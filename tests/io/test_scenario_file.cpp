@@ -59,8 +59,8 @@ TEST(ScenarioFile, HeartOnlyBuiltinHasTheThesisValues) {
   EXPECT_FALSE(s.description.empty());
   EXPECT_EQ(s.simulation.dt, Real(0.005));
   EXPECT_EQ(s.simulation.duration, Real(2.0));
-  EXPECT_EQ(s.simulation.iterations, 4);
-  EXPECT_EQ(s.simulation.volumePasses, 2);
+  EXPECT_EQ(s.simulation.iterations, 3);
+  EXPECT_EQ(s.simulation.volumePasses, 3);
   EXPECT_EQ(s.simulation.gravity, Vec3(0, Real(-9.81), 0));
   EXPECT_TRUE(s.cycle.enabled);
   EXPECT_EQ(s.cycle.mode, TimingMode::Thesis);
