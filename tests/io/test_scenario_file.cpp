@@ -178,7 +178,7 @@ std::vector<KeyCase> everyKeyCase() {
       {"model.outflow_vessel_length", "1.3",
        [](const Scenario& s) { return s.geometry.outflowVesselLength == Real(1.3); }},
       {"model.resolution", "2", [](const Scenario& s) { return s.geometry.resolution == Real(2); }},
-      {"simulation.volume_passes", "3", [](const Scenario& s) { return s.simulation.volumePasses == 3; }},
+      {"simulation.volume_passes", "5", [](const Scenario& s) { return s.simulation.volumePasses == 5; }},
       {"tissue.stiffness", "0.75", [](const Scenario& s) { return s.tissue.stiffness == Real(0.75); }},
       {"tissue.volume_stiffness", "0.25", [](const Scenario& s) { return s.tissue.volumeStiffness == Real(0.25); }},
       {"tissue.volume_compliance", "1e-6",
