@@ -39,7 +39,15 @@ BeatClock::BeatClock(const BeatClockSettings& settings, Real dt)
 
 Real BeatClock::advance() {
   if (m_phase == Phase::Rest) return 0;
-  return m_settings.physiological ? advancePhysiological() : advanceThesis();
+  const Real displacement = m_phase != Phase::Systole ? Real(0)
+                            : m_settings.physiological ? physiologicalDisplacement()
+                                                       : m_settings.displacePerStep;
+  // Algorithm 2, lines 8-11 (steps++, switch when steps >= BEATING_DURATION), and Fig. 4.6's
+  // switch out of diastole.
+  ++m_steps;
+  if (m_phase == Phase::Systole && m_steps >= m_systoleLength) enterDiastole();
+  else if (m_phase == Phase::Diastole && m_steps >= m_diastoleLength) endDiastole();
+  return displacement;
 }
 
 void BeatClock::delayStart(int steps) {
@@ -49,28 +57,12 @@ void BeatClock::delayStart(int steps) {
   m_diastoleLength = steps;
 }
 
-// Algorithm 2, lines 6-11, with Fig. 4.6's switch out of diastole.
-Real BeatClock::advanceThesis() {
-  Real displacement = 0;
-  if (m_phase == Phase::Systole) displacement = m_settings.displacePerStep;
-  ++m_steps;
-  if (m_phase == Phase::Systole && m_steps >= m_systoleLength) enterDiastole();
-  else if (m_phase == Phase::Diastole && m_steps >= m_diastoleLength) endDiastole();
-  return displacement;
-}
-
-Real BeatClock::advancePhysiological() {
-  Real displacement = 0;
-  if (m_phase == Phase::Systole) {
-    const double n = m_systoleLength;
-    displacement = Real(double(m_settings.contraction) *
-                        (smoothRamp((m_steps + 1) / n) - smoothRamp(m_steps / n)));
-    m_travel = Real(double(m_settings.contraction) * smoothRamp((m_steps + 1) / n));
-  }
-  ++m_steps;
-  if (m_phase == Phase::Systole && m_steps >= m_systoleLength) enterDiastole();
-  else if (m_phase == Phase::Diastole && m_steps >= m_diastoleLength) endDiastole();
-  return displacement;
+// The travel reached at the end of this systolic step, and the increment over the step.
+Real BeatClock::physiologicalDisplacement() {
+  const double n = m_systoleLength;
+  const double contraction = m_settings.contraction;
+  m_travel = Real(contraction * smoothRamp((m_steps + 1) / n));
+  return Real(contraction * (smoothRamp((m_steps + 1) / n) - smoothRamp(m_steps / n)));
 }
 
 void BeatClock::enterDiastole() {

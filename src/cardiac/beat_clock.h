@@ -58,8 +58,7 @@ class BeatClock {
   [[nodiscard]] int diastoleLength() const { return m_diastoleLength; }
 
  private:
-  Real advanceThesis();
-  Real advancePhysiological();
+  Real physiologicalDisplacement();
   void enterDiastole();
   void endDiastole();
 
