@@ -1,0 +1,213 @@
+#include "pbd/neighbour_grid.h"
+
+#include <bit>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+namespace hs::pbd {
+namespace {
+
+// Below this the dense grid is always allowed (tiny inputs would otherwise always hash).
+constexpr double kMinDenseCells = 64;
+// Cell and bucket counts must fit an Index with room for the end sentinel.
+constexpr double kMaxCells = 2147483648.0;  // 2^31
+// Morton input coordinates are clamped to 2^40 before coarsening to 21 bits.
+constexpr double kMortonMaxCoord = 1099511627776.0;
+
+struct Bounds {
+  std::array<double, 3> lo{0, 0, 0};
+  std::array<double, 3> hi{0, 0, 0};
+};
+
+// Bounding box of the finite positions (non-finite ones cannot be anyone's neighbour).
+Bounds finiteBounds(const std::vector<Vec3>& positions) {
+  Bounds b;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  b.lo = {inf, inf, inf};
+  b.hi = {-inf, -inf, -inf};
+  for (const Vec3& p : positions) {
+    if (!p.allFinite()) continue;
+    for (int a = 0; a < 3; ++a) {
+      b.lo[a] = std::min(b.lo[a], double(p[a]));
+      b.hi[a] = std::max(b.hi[a], double(p[a]));
+    }
+  }
+  if (!(b.lo[0] <= b.hi[0])) b.lo = b.hi = {0, 0, 0};  // no finite position at all
+  return b;
+}
+
+std::size_t hashBucketCount(std::size_t n, Real perParticle) {
+  const double want = std::clamp(double(perParticle) * double(n), 1.0, kMaxCells);
+  return std::bit_ceil(std::size_t(want));
+}
+
+std::size_t denseCellLimit(std::size_t n, Real perParticle) {
+  return std::size_t(std::min(double(perParticle) * double(n) + kMinDenseCells, kMaxCells));
+}
+
+}  // namespace
+
+void NeighbourGrid::build(const std::vector<Vec3>& positions, Real cellSize) {
+  assert(cellSize > 0 && std::isfinite(double(cellSize)));
+  if (positions.size() >= std::size_t(kNoParticle)) throw std::length_error("NeighbourGrid: too many particles");
+  const std::size_t n = positions.size();
+  m_count = Index(n);
+  m_cellSize = cellSize;
+
+  const Bounds b = finiteBounds(positions);
+  m_origin = b.lo;
+
+  // Cells are made very slightly larger than cellSize. The caller's distance test runs in Real
+  // and may accept a pair whose exact distance exceeds the radius by a few ulps, and the cell
+  // coordinates are rounded in double; the margin covers both, so every accepted pair is at
+  // most one cell apart on each axis.
+  double maxT = 0;
+  for (int a = 0; a < 3; ++a) maxT = std::max(maxT, (b.hi[a] - b.lo[a]) / double(cellSize));
+  const double margin = 64.0 * double(std::numeric_limits<Real>::epsilon()) +
+                        8.0 * std::numeric_limits<double>::epsilon() * (1.0 + std::min(maxT, kMaxCoord));
+  m_invCell = 1.0 / (double(cellSize) * (1.0 + margin));
+
+  // Choose the layout: dense if the box needs few enough cells, else hashed.
+  double cells = 1;
+  for (int a = 0; a < 3; ++a) {
+    m_dims[a] = std::int64_t(std::floor(std::min((b.hi[a] - b.lo[a]) * m_invCell, kMaxCoord))) + 1;
+    cells *= double(m_dims[a]);
+  }
+  const std::size_t denseLimit = denseCellLimit(n, m_settings.denseCellsPerParticle);
+  const std::size_t buckets = hashBucketCount(n, m_settings.hashBucketsPerParticle);
+  m_hashed = m_settings.forceHashing || cells > double(denseLimit);
+  const std::size_t cellCount = m_hashed ? buckets : std::size_t(cells);
+  m_bucketMask = m_hashed ? std::uint64_t(buckets - 1) : 0;
+
+  // Reserve for the largest layout this particle count can choose, so that rebuilding with the
+  // same count never reallocates, whichever layout the new positions need.
+  if (n != m_reservedFor || m_cellStart.capacity() == 0) {
+    m_cellStart.reserve(std::max(denseLimit, buckets) + 1);
+    m_sorted.reserve(n);
+    m_cellOf.reserve(n);
+    m_sortedPositions.reserve(n);
+    m_reservedFor = n;
+  }
+  m_cellStart.assign(cellCount + 1, 0);
+  m_sorted.resize(n);
+  m_cellOf.resize(n);
+  m_sortedPositions.resize(n);
+
+  // 1. Cell of each particle and histogram.
+  for (std::size_t i = 0; i < n; ++i) {
+    const Coord c = cellCoord(positions[i]);
+    Index key;
+    if (m_hashed) {
+      key = bucketOf(c[0], c[1], c[2]);
+    } else {
+      // Finite positions lie inside the box already; clamping only places non-finite ones.
+      std::int64_t k[3];
+      for (int a = 0; a < 3; ++a) k[a] = std::clamp<std::int64_t>(c[a], 0, m_dims[a] - 1);
+      key = Index((k[2] * m_dims[1] + k[1]) * m_dims[0] + k[0]);
+    }
+    m_cellOf[i] = key;
+    ++m_cellStart[key];
+  }
+  // 2. Inclusive prefix sum: m_cellStart[c] = end of cell c.
+  Index running = 0;
+  for (std::size_t c = 0; c < cellCount; ++c) {
+    running += m_cellStart[c];
+    m_cellStart[c] = running;
+  }
+  m_cellStart[cellCount] = Index(n);
+  // 3. Scatter backwards, decrementing: afterwards m_cellStart[c] = begin of cell c, and each
+  //    cell lists its particles in increasing index order (stable).
+  for (std::size_t i = n; i-- > 0;) {
+    const Index slot = --m_cellStart[m_cellOf[i]];
+    m_sorted[slot] = Index(i);
+    m_sortedPositions[slot] = positions[i];
+  }
+}
+
+void NeighbourGrid::buildNeighbourLists(const std::vector<Vec3>& positions, Real radius, NeighbourLists& lists) const {
+  assert(positions.size() == m_count);
+  const std::int64_t n = std::int64_t(m_count);
+  lists.offsets.assign(std::size_t(n) + 1, 0);
+  Index* const offsets = lists.offsets.data();
+
+  // Pass 1: count.
+#pragma omp parallel for schedule(dynamic, 256) num_threads(m_settings.threads)
+  for (std::int64_t i = 0; i < n; ++i) {
+    Index count = 0;
+    forEachNeighbour(Index(i), positions, radius, [&count](Index, const Vec3&, Real) { ++count; });
+    offsets[i + 1] = count;
+  }
+  // Prefix sum (serial: O(N) and trivially cheap next to the queries).
+  std::uint64_t total = 0;
+  for (std::int64_t i = 1; i <= n; ++i) {
+    total += offsets[i];
+    if (total > std::numeric_limits<Index>::max()) throw std::length_error("NeighbourGrid: too many neighbour pairs");
+    offsets[i] = Index(total);
+  }
+  lists.indices.resize(std::size_t(total));
+  Index* const indices = lists.indices.data();
+
+  // Pass 2: fill each particle's own range, then sort it so the order is by j.
+#pragma omp parallel for schedule(dynamic, 256) num_threads(m_settings.threads)
+  for (std::int64_t i = 0; i < n; ++i) {
+    Index k = offsets[i];
+    forEachNeighbour(Index(i), positions, radius, [&k, indices](Index j, const Vec3&, Real) { indices[k++] = j; });
+    assert(k == offsets[i + 1]);
+    std::sort(indices + offsets[i], indices + offsets[i + 1]);
+  }
+}
+
+namespace {
+
+// Spreads the low 21 bits of v so that two zero bits separate consecutive bits.
+std::uint64_t spreadBits3(std::uint64_t v) {
+  v &= 0x1FFFFFull;
+  v = (v | (v << 32)) & 0x1F00000000FFFFull;
+  v = (v | (v << 16)) & 0x1F0000FF0000FFull;
+  v = (v | (v << 8)) & 0x100F00F00F00F00Full;
+  v = (v | (v << 4)) & 0x10C30C30C30C30C3ull;
+  v = (v | (v << 2)) & 0x1249249249249249ull;
+  return v;
+}
+
+}  // namespace
+
+std::vector<Index> mortonOrder(const std::vector<Vec3>& positions, Real cellSize) {
+  assert(cellSize > 0);
+  const std::size_t n = positions.size();
+  const Bounds b = finiteBounds(positions);
+  const double inv = 1.0 / double(cellSize);
+
+  // Integer cell coordinates from the box corner; non-finite positions go to the end.
+  std::vector<std::array<std::uint64_t, 3>> cells(n);
+  std::uint64_t maxCoord = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int a = 0; a < 3; ++a) {
+      double t = (double(positions[i][a]) - b.lo[a]) * inv;
+      if (!(t >= 0)) t = 0;
+      if (!(t <= kMortonMaxCoord)) t = kMortonMaxCoord;
+      cells[i][a] = std::uint64_t(t);
+    }
+    if (!positions[i].allFinite()) cells[i] = {0, 0, 0};  // sorted last below
+    maxCoord = std::max({maxCoord, cells[i][0], cells[i][1], cells[i][2]});
+  }
+  // A Morton code holds 21 bits per axis; coarsen uniformly if the extent is larger (far
+  // outliers), which keeps the ordering a Z-curve of coarser cells.
+  int shift = 0;
+  while ((maxCoord >> shift) >= (1ull << 21)) ++shift;
+
+  std::vector<std::pair<std::uint64_t, Index>> keys(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& c = cells[i];
+    const std::uint64_t code =
+        spreadBits3(c[0] >> shift) | (spreadBits3(c[1] >> shift) << 1) | (spreadBits3(c[2] >> shift) << 2);
+    keys[i] = {positions[i].allFinite() ? code : ~std::uint64_t(0), Index(i)};
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<Index> order(n);
+  for (std::size_t k = 0; k < n; ++k) order[k] = keys[k].second;
+  return order;
+}
+
+}  // namespace hs::pbd
