@@ -1,0 +1,94 @@
+#pragma once
+// Position Based Fluids: the density constraint and XSPH viscosity of Macklin & Mueller 2013,
+// "Position Based Fluids", ACM TOG 32(4), sections 3-5 (thesis section 4.2, eq. 4.7-4.11).
+//
+// One Jacobi iteration of the density solve is
+//   computeDensities           rho_i = sum_j m W_poly6(p_i - p_j, h)             (PBF eq. 2)
+//   computeLambdas             lambda_i = -C_i / (sum_k |grad_{p_k} C_i|^2 + eps) (PBF eq. 11)
+//   computeDensityCorrections  dp_i = (m/rho0) sum_j (lambda_i + lambda_j + s_corr) grad W  (eq. 12)
+// after which the caller adds dp_i to p_i. XSPH (PBF eq. 17) post-processes velocities.
+//
+// Mass convention: PBF (and thesis eq. 4.9-4.10) write grad C and dp with a factor 1/rho0,
+// which assumes unit particle mass (the thesis says so under eq. 4.11). With a physical mass m
+// in eq. 2 the chain rule gives grad_{p_k} C_i = (m/rho0) sum_j grad W, so here the factor is
+// m/rho0; it equals the papers' 1/rho0 for m = 1. Without it the Newton step of eq. 9-11 would
+// be scaled by m (a 4.3x overshoot for blood at the thesis spacing of 0.16 m).
+//
+// Parallelism and determinism: every function is a gather. Each particle i of `subset` reads
+// its neighbours through the CSR lists (neighbours sorted by j, neighbour_grid.h) and writes
+// only its own output entry, so there are no atomics and no cross-thread reductions, and the
+// result is bitwise identical for any thread count.
+//
+// Subsets: `subset` lists the particles whose outputs are computed (e.g. the fluid particles of
+// a Particles set). Neighbours are whatever `lists` holds for them; every neighbour is treated
+// as a fluid particle of mass m (computeDensityCorrections reads lambdas[j] for every listed
+// neighbour j), so build the lists over the fluid particles only. Output vectors are resized to
+// positions.size() when their size differs; entries outside `subset` are left unchanged.
+#include <span>
+#include <vector>
+
+#include "pbd/neighbour_grid.h"
+#include "pbd/sph_kernels.h"
+#include "pbd/types.h"
+
+namespace hs::pbd {
+
+struct FluidSettings {
+  Real restDensity = 1000;      // rho0, kg/m^3 (thesis Table: blood rest density 1000 kg/m^3)
+  Real particleMass = 1;        // m, kg; particleMassFor(rho0, spacing) for a lattice at rest
+  Real supportRadius = Real(0.32);  // h, m (thesis Table: kernel support radius 0.32 m)
+  // epsilon of PBF eq. 11 (constraint-force mixing), in the units of sum_k |grad C|^2, 1/m^2.
+  // Keeps lambda finite where a particle has few neighbours; it should be small next to the
+  // sum of a full rest neighbourhood, measured in test_fluid.cpp as 0.37/d^2 for h = 2d and
+  // 0.022/d^2 for h = 4d (d the spacing; 14.6/m^2 at the thesis's d = 0.16 m, h = 0.32 m).
+  Real relaxation = Real(0.1);
+  // Artificial pressure s_corr = -k (W_poly6(r)/W_poly6(deltaQ))^n against the tensile
+  // instability (PBF eq. 13-14; PBF suggests k = 0.1, n = 4, |deltaQ| = 0.1..0.3 h).
+  bool tensileCorrection = false;
+  Real tensileK = Real(0.1);
+  int tensileN = 4;
+  Real tensileDeltaQRatio = Real(0.2);  // deltaQ = ratio * h
+  Real xsphViscosity = Real(0.01);      // c of PBF eq. 17, units m^3 (W is 1/m^3)
+};
+
+// Mass of one particle of a cubic lattice at rest: m = rho0 d^3 (one particle per d^3 cell).
+inline Real particleMassFor(Real restDensity, Real spacing) {
+  return restDensity * spacing * spacing * spacing;
+}
+
+// rho_i = sum_j m W_poly6(|p_i - p_j|, h), j over the neighbours of i and i itself (PBF eq. 2,
+// thesis eq. 4.8). The self term m W_poly6(0) comes first, then the neighbours in list order.
+void computeDensities(const std::vector<Vec3>& positions, const NeighbourLists& lists,
+                      std::span<const Index> subset, const SphKernels& kernels,
+                      const FluidSettings& settings, std::vector<Real>& densities, int threads = 1);
+
+// lambda_i = -C_i / (sum_k |grad_{p_k} C_i|^2 + eps), C_i = rho_i/rho0 - 1 (PBF eq. 1, 11;
+// thesis eq. 4.7), with the gradient of PBF eq. 8 (thesis eq. 4.9), spiky kernel:
+//   grad_{p_i} C_i = (m/rho0) sum_j grad W(p_i - p_j),  grad_{p_j} C_i = -(m/rho0) grad W(p_i - p_j).
+void computeLambdas(const std::vector<Vec3>& positions, const NeighbourLists& lists,
+                    std::span<const Index> subset, const SphKernels& kernels,
+                    const FluidSettings& settings, const std::vector<Real>& densities,
+                    std::vector<Real>& lambdas, int threads = 1);
+
+// C_i = rho_i/rho0 - 1 (PBF eq. 1) for the particles of subset (diagnostics and tests).
+void computeDensityConstraints(const std::vector<Real>& densities, std::span<const Index> subset,
+                               const FluidSettings& settings, std::vector<Real>& constraints,
+                               int threads = 1);
+
+// dp_i = (m/rho0) sum_j (lambda_i + lambda_j + s_corr) grad W_spiky(p_i - p_j) (PBF eq. 12,
+// thesis eq. 4.10), s_corr = -k (W_poly6(|p_i - p_j|)/W_poly6(deltaQ))^n when enabled (eq. 13).
+void computeDensityCorrections(const std::vector<Vec3>& positions, const NeighbourLists& lists,
+                               std::span<const Index> subset, const SphKernels& kernels,
+                               const FluidSettings& settings, const std::vector<Real>& lambdas,
+                               std::vector<Vec3>& corrections, int threads = 1);
+
+// XSPH viscosity (PBF eq. 17): v_i^new = v_i + c sum_j (v_j - v_i) W_poly6(|x_i - x_j|, h).
+// Thesis eq. 4.11 writes v_i - gamma sum_j (m/rho_i)(v_i - v_j) W, which has the same sign
+// (-(v_i - v_j) = v_j - v_i) and an extra m/rho_i factor; PBF's c absorbs it (c ~ gamma m/rho0).
+// Reads velocities, writes newVelocities (must not be the same vector: Jacobi update).
+void applyXsphViscosity(const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,
+                        const NeighbourLists& lists, std::span<const Index> subset,
+                        const SphKernels& kernels, const FluidSettings& settings,
+                        std::vector<Vec3>& newVelocities, int threads = 1);
+
+}  // namespace hs::pbd
