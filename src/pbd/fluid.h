@@ -48,7 +48,10 @@ struct FluidSettings {
   Real tensileK = Real(0.1);
   int tensileN = 4;
   Real tensileDeltaQRatio = Real(0.2);  // deltaQ = ratio * h
-  Real xsphViscosity = Real(0.01);      // c of PBF eq. 17, units m^3 (W is 1/m^3)
+  // c of PBF eq. 17, units m^3 (W is 1/m^3). Stable only while c sum_j W_ij < 1, and a full
+  // neighbourhood has sum_j W_ij ~ rho0/m, so c must stay below m/rho0 (= d^3 at rest spacing d:
+  // 0.0041 m^3 for the thesis's d = 0.16 m). Default: 0.003, what the settling test uses.
+  Real xsphViscosity = Real(0.003);
 };
 
 // Mass of one particle of a cubic lattice at rest: m = rho0 d^3 (one particle per d^3 cell).

@@ -1,0 +1,123 @@
+#pragma once
+// One Position Based Fluids step for the Fluid-kind particles of a Particles set (Macklin &
+// Mueller 2013, "Position Based Fluids", Algorithm 1; thesis section 4.2):
+//   v <- v + dt g,  p <- x + dt v                     (Alg. 1 lines 1-4, solver.h phases)
+//   find neighbours of p once per step                 (Alg. 1 lines 5-7, neighbour_grid.h)
+//   iterations times:                                  (Alg. 1 lines 8-19)
+//     rho_i, lambda_i (PBF eq. 2, 11), dp_i (eq. 12)   (fluid.h, Jacobi)
+//     p_i <- p_i + dp_i, then the wall planes          (collision response, thesis eq. 4.5)
+//   v <- (p - x)/dt, x <- p                            (Alg. 1 lines 20-21, solver.h)
+//   XSPH viscosity on the new velocities (PBF eq. 17)  (Alg. 1 line 22)
+//
+// The density solve works on compact arrays holding only the fluid particles (slot s is
+// particle fluidIndices()[s]); the neighbour grid and its CSR lists are built over those,
+// so tissue particles never enter the density estimate. All loops are per-particle gathers,
+// so the result is bitwise identical for any thread count.
+//
+// Mixed sets: step() runs the solver.h phases over the whole set, so tissue particles in the
+// same set are integrated too (gravity, prediction, velocity update, no constraints). A world
+// with tissue should call applyExternalForces/predictPositions itself and use
+// projectDensity() between prediction and the velocity update and applyViscosity() after it.
+#include <span>
+#include <vector>
+
+#include "pbd/constraints.h"
+#include "pbd/fluid.h"
+#include "pbd/neighbour_grid.h"
+#include "pbd/particles.h"
+#include "pbd/solver.h"
+#include "pbd/sph_kernels.h"
+
+namespace hs::pbd {
+
+struct FluidStepSettings {
+  SolverSettings base;          // dt, gravity (and gravityScale), threads; base.iterations unused
+  int iterations = 4;           // density solver iterations per step (PBF Algorithm 1 line 8)
+  FluidSettings fluid;          // rho0, m, h, eps, s_corr, XSPH c
+  Real particleRadius = Real(0.08);  // m, distance kept from the walls (thesis: 0.08 m)
+  std::vector<Plane> walls;     // normals point into the fluid's allowed half-space
+  // Unilateral density constraint C_i = max(rho_i/rho0 - 1, 0), i.e. lambda_i <- min(lambda_i, 0):
+  // corrections only push apart. PBF's bilateral C also pulls under-dense particles together;
+  // with no boundary particles, every particle at a wall or the free surface is under-dense
+  // (a corner of the rest lattice has C = -0.32 at h = 2d) and small sum |grad C|^2, so the
+  // pull is huge (measured: 16 m/s after one step, the column explodes within 0.1 s).
+  // SPlisHSPlasH's PBF clamps C the same way (Bender et al., TimeStepPBF).
+  bool unilateralDensity = true;
+};
+
+class FluidSolver {
+ public:
+  explicit FluidSolver(FluidStepSettings settings = {});
+
+  const FluidStepSettings& settings() const { return m_settings; }
+  void setSettings(const FluidStepSettings& settings);
+
+  // One whole step (see the header comment).
+  void step(Particles& particles);
+
+  // The phases, for a caller that integrates a mixed set itself. projectDensity expects
+  // particles.predicted to hold the predicted positions; it builds the neighbour lists and
+  // runs the iterations. applyViscosity uses the lists of the last projectDensity.
+  void projectDensity(Particles& particles);
+  void applyViscosity(Particles& particles);
+
+  // Forget the cached fluid index list (call after changing kinds without changing the
+  // particle count; a change of count is detected automatically).
+  void invalidateFluidIndices() { m_indexedCount = kNotIndexed; }
+
+  std::span<const Index> fluidIndices() const { return m_fluid; }
+  // Diagnostics of the last projectDensity, in compact (fluid slot) order: neighbour lists
+  // built on the predicted positions, and densities of the last iteration (before its dp).
+  const NeighbourLists& neighbourLists() const { return m_lists; }
+  const std::vector<Real>& densities() const { return m_density; }
+
+ private:
+  static constexpr std::size_t kNotIndexed = ~std::size_t(0);
+
+  void updateFluidIndices(const Particles& particles);
+
+  FluidStepSettings m_settings;
+  SphKernels m_kernels;
+  NeighbourGrid m_grid;
+
+  std::size_t m_indexedCount = kNotIndexed;  // particle count m_fluid was built for
+  std::vector<Index> m_fluid;      // particle index of each fluid slot
+  std::vector<Index> m_slots;      // 0 .. fluid count - 1: the subset for fluid.h
+  std::vector<Vec3> m_p;           // compact predicted positions
+  std::vector<Real> m_w;           // compact inverse masses
+  NeighbourLists m_lists;
+  std::vector<Real> m_density;
+  std::vector<Real> m_lambda;
+  std::vector<Vec3> m_dp;
+  std::vector<Vec3> m_v;           // compact velocities (XSPH input)
+  std::vector<Vec3> m_vNew;        // XSPH output
+};
+
+// A cubic lattice of spacing d filling the box [lower, upper]: one particle at the centre of
+// each whole cell of edge d, x = lower + d (i + 1/2), so particles keep d/2 from every face.
+std::vector<Vec3> fluidBlock(const Vec3& lower, const Vec3& upper, Real spacing);
+
+// Six inward-facing planes of the box [lower, upper] (walls for FluidStepSettings).
+std::vector<Plane> boxWalls(const Vec3& lower, const Vec3& upper);
+
+struct FluidStats {
+  std::size_t fluidCount = 0;
+  std::size_t fullCount = 0;         // fluid particles with a full neighbourhood
+  Index fullThreshold = 0;           // neighbour count that counts as full
+  Real densityErrorMean = 0;         // mean |rho/rho0 - 1| over full-neighbourhood particles
+  Real densityErrorMax = 0;          // max  |rho/rho0 - 1| over them
+  Real densitySignedMean = 0;        // mean (rho/rho0 - 1) over them (compression > 0)
+  Real maxSpeed = 0;                 // max |v| over all fluid particles
+};
+
+// Neighbour count (|r| < h, self excluded) of an interior particle of a cubic lattice of
+// spacing d.
+Index latticeNeighbourCount(Real supportRadius, Real spacing);
+
+// Density error and speed of the fluid particles at their current positions. A particle has
+// a full neighbourhood when it has at least 90% of latticeNeighbourCount(h, spacing)
+// neighbours (free-surface and wall particles lack neighbours and are under-dense by design).
+FluidStats measureFluid(const Particles& particles, const FluidSettings& fluid, Real spacing,
+                        int threads = 1);
+
+}  // namespace hs::pbd
