@@ -113,9 +113,13 @@ void predictPositions(Particles& particles, const SolverSettings& settings) {
 
 void projectConstraints(ConstraintSet& constraints, Particles& particles,
                         const SolverSettings& settings) {
-  std::fill(constraints.distances.lambda.begin(), constraints.distances.lambda.end(), Real(0));
-  std::fill(constraints.areas.lambda.begin(), constraints.areas.lambda.end(), Real(0));
-  std::fill(constraints.volumes.lambda.begin(), constraints.volumes.lambda.end(), Real(0));
+  // XPBD multipliers start each step at zero; plain PBD groups (no compliance) never read them.
+  auto resetLambdas = [](auto& group) {
+    if (group.compliance != Real(0)) std::fill(group.lambda.begin(), group.lambda.end(), Real(0));
+  };
+  resetLambdas(constraints.distances);
+  resetLambdas(constraints.areas);
+  resetLambdas(constraints.volumes);
   const std::size_t work = constraints.distances.size() + constraints.areas.size() +
                            constraints.volumes.size() + particles.size();
   // One parallel region for all iterations: threads meet only at the end of each colour.

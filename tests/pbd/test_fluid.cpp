@@ -87,6 +87,23 @@ FluidSettings settingsFor(Real h, Real spacing) {
   return s;
 }
 
+// One Jacobi pass of the density solve: densities, constraints, lambdas, corrections.
+struct DensitySolve {
+  std::vector<Real> rho, c, lambda;
+  std::vector<Vec3> dp;
+};
+
+DensitySolve solveDensityOnce(const std::vector<Vec3>& x, const NeighbourLists& lists,
+                              const std::vector<Index>& subset, const SphKernels& kernels,
+                              const FluidSettings& s) {
+  DensitySolve out;
+  computeDensities(x, lists, subset, kernels, s, out.rho);
+  computeDensityConstraints(out.rho, subset, s, out.c);
+  computeLambdas(x, lists, subset, kernels, s, out.rho, out.lambda);
+  computeDensityCorrections(x, lists, subset, kernels, s, out.lambda, out.dp);
+  return out;
+}
+
 TEST(Fluid, ParticleMassIsRestDensityTimesSpacingCubed) {
   EXPECT_FLOAT_EQ(particleMassFor(1000, Real(0.16)), Real(4.096));
   EXPECT_FLOAT_EQ(particleMassFor(1060, Real(0.5)), Real(132.5));
@@ -111,12 +128,11 @@ TEST_P(FluidRestLattice, InteriorDensityIsRestDensityAndCorrectionVanishes) {
   const NeighbourLists lists = listsFor(lat.x, h);
   const std::vector<Index> all = allOf(lat.x.size());
 
-  std::vector<Real> rho, c, lambda;
-  std::vector<Vec3> dp;
-  computeDensities(lat.x, lists, all, kernels, s, rho);
-  computeDensityConstraints(rho, all, s, c);
-  computeLambdas(lat.x, lists, all, kernels, s, rho, lambda);
-  computeDensityCorrections(lat.x, lists, all, kernels, s, lambda, dp);
+  const DensitySolve solve = solveDensityOnce(lat.x, lists, all, kernels, s);
+  const std::vector<Real>& rho = solve.rho;
+  const std::vector<Real>& c = solve.c;
+  const std::vector<Real>& lambda = solve.lambda;
+  const std::vector<Vec3>& dp = solve.dp;
 
   int interior = 0, deep = 0;
   Real maxC = 0, maxDeepDp = 0;
@@ -160,12 +176,10 @@ TEST(Fluid, CompressedLatticeIsPushedApartAndOneIterationReducesC) {
   const std::vector<Index> all = allOf(lat.x.size());
   NeighbourLists lists = listsFor(lat.x, h);
 
-  std::vector<Real> rho, c, lambda;
-  std::vector<Vec3> dp;
-  computeDensities(lat.x, lists, all, kernels, s, rho);
-  computeDensityConstraints(rho, all, s, c);
-  computeLambdas(lat.x, lists, all, kernels, s, rho, lambda);
-  computeDensityCorrections(lat.x, lists, all, kernels, s, lambda, dp);
+  DensitySolve solve = solveDensityOnce(lat.x, lists, all, kernels, s);
+  std::vector<Real>& rho = solve.rho;
+  std::vector<Real>& c = solve.c;
+  const std::vector<Vec3>& dp = solve.dp;
 
   // Interior: full neighbourhood (the support 2d spans 2.2 steps of 0.9 d, so 3 layers deep).
   std::vector<Index> interior;
