@@ -64,8 +64,49 @@ nlohmann::json measure(Sim& sim, std::size_t particles, int threads, double seco
           {"windows", windowRates.size()}};
 }
 
+// A thesis-scale dam break (Table 5.2: radius 0.08 m, spacing 2 radii, support 4 radii;
+// dt = 0.005 s, 4 iterations): a column of nx x ny x nz particles against the left wall of a
+// tank four columns long, released at t = 0.
+cardiac::Scenario damBreakScenario(int nx, int ny, int nz) {
+  cardiac::Scenario s;
+  s.name = "pbf-dam-break";
+  s.heart = false;
+  s.cycle.enabled = false;
+  s.simulation.dt = pbd::Real(0.005);
+  cardiac::BloodSettings& b = s.blood;
+  b.enabled = true;
+  b.particles = 0;
+  b.radius = pbd::Real(0.08);
+  b.spacing = 2 * b.radius;
+  b.supportRadius = 4 * b.radius;
+  b.iterations = 4;
+  b.blockMin = pbd::Vec3::Zero();
+  b.blockMax = b.spacing * pbd::Vec3(pbd::Real(nx), pbd::Real(ny), pbd::Real(nz));
+  s.container.enabled = true;
+  s.container.min = pbd::Vec3::Zero();
+  s.container.max = b.spacing * pbd::Vec3(pbd::Real(4 * nx), pbd::Real(ny + 4), pbd::Real(nz));
+  return s;
+}
+
+BenchCase damBreakCase(const std::string& name, int nx, int ny, int nz) {
+  const std::string count = std::to_string(nx * ny * nz);
+  return {name,
+          "PBF dam break, " + count + " particles (" + std::to_string(nx) + " x " + std::to_string(ny) + " x " +
+              std::to_string(nz) + "), thesis constants, 4 iterations, dt 5 ms",
+          [nx, ny, nz](int threads, double seconds) {
+            const cardiac::Scenario scenario = damBreakScenario(nx, ny, nz);
+            cardiac::HeartSimulation sim(scenario, threads);
+            nlohmann::json r = measure(sim, sim.particles().size(), threads, seconds);
+            r["iterations"] = scenario.blood.iterations;  // density solver iterations per step
+            return r;
+          }};
+}
+
 std::vector<BenchCase> allCases() {
   return {
+      damBreakCase("pbf-dam-break-1k", 10, 20, 5),
+      damBreakCase("pbf-dam-break-10k", 25, 40, 10),
+      damBreakCase("pbf-dam-break-100k", 50, 80, 25),
       {"tissue-lv", "heart-only scenario: default LV beating in thesis mode, no blood",
        [](int threads, double seconds) {
          cardiac::Scenario scenario = io::loadScenario("heart-only");

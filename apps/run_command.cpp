@@ -81,7 +81,61 @@ struct RunStatistics {
   std::size_t invertedTetsMax = 0;
   double cavityMin = INFINITY;
   double cavityMax = -INFINITY;
+  // Blood: the density error over the last simulated second (issue: "over the last second").
+  std::size_t bloodLostMax = 0;
+  double bloodSpeedMax = 0;
+  double lastSecondFrom = 0;      // steps ending after this time count
+  double densityErrorMeanSum = 0;
+  double densityErrorMax = 0;
+  std::size_t lastSecondSteps = 0;
 };
+
+
+// The wall's part of the JSON report: mesh, volume errors, cavity and beats.
+void addHeartReport(nlohmann::ordered_json& report, const cardiac::HeartSimulation& sim, const RunStatistics& stats,
+                    const cardiac::BeatTracker& beats, std::int64_t steps) {
+  const cardiac::TissueStats finalTissue = sim.tissueStats();
+  const pbd::MeshQuality quality = pbd::measureQuality(sim.model().mesh);
+  const auto& model = sim.model();
+  report["tissue"] = {
+      {"vertices", model.mesh.vertices.size()},
+      {"tets", model.mesh.tets.size()},
+      {"surface_triangles", model.surface.size()},
+      {"volume_error_max", stats.volumeErrorMax},
+      {"volume_error_mean", steps > 0 ? stats.volumeErrorMeanSum / double(steps) : 0.0},
+      {"inverted_tets", finalTissue.invertedTets},
+      {"rest_deviation_final_rel", sim.restDeviationRelative()},
+      {"min_dihedral_deg", quality.minDihedralDeg},
+      {"max_aspect_ratio", quality.maxAspectRatio},
+  };
+  nlohmann::ordered_json beatList = nlohmann::json::array();
+  for (const auto& b : beats.beats()) {
+    beatList.push_back({{"beat", b.index},
+                        {"start_s", b.startTime},
+                        {"edv_ml", b.edv * 1e6},
+                        {"esv_ml", b.esv * 1e6},
+                        {"stroke_volume_ml", b.strokeVolume() * 1e6},
+                        {"ejection_fraction", b.ejectionFraction()}});
+  }
+  report["cavity"] = {
+      {"volume_rest_m3", cardiac::cavityVolume(model, model.mesh.vertices)},
+      {"volume_min_m3", steps > 0 ? stats.cavityMin : sim.cavityVolume()},
+      {"volume_max_m3", steps > 0 ? stats.cavityMax : sim.cavityVolume()},
+      {"ejection_fraction", beats.meanEjectionFraction()},
+      {"beats", beatList},
+  };
+  report["beats"] = beats.beats().size();
+}
+
+// Blood particles as a VTK point cloud with their velocities.
+io::VtuFrame bloodFrame(const cardiac::HeartSimulation& sim) {
+  io::VtuFrame frame;
+  const auto first = static_cast<std::ptrdiff_t>(sim.firstBloodParticle());
+  frame.points.assign(sim.particles().position.begin() + first, sim.particles().position.end());
+  std::vector<pbd::Vec3> velocity(sim.particles().velocity.begin() + first, sim.particles().velocity.end());
+  frame.vectorArrays = {{"velocity", velocity}};
+  return frame;
+}
 
 }  // namespace
 
@@ -128,15 +182,19 @@ int runCommand(const RunOptions& options) {
     std::cerr << "heartsim: error: " << (outDir / "metrics.csv").string() << ": cannot open for writing\n";
     return kExitFailure;
   }
-  csv << "step,time_s,phase,cavity_volume_m3,cavity_volume_ml,volume_error_mean,volume_error_max,"
-         "inverted_tets,rest_deviation_rel\n";
+  csv << "step,time_s,phase";
+  if (sim.hasHeart())
+    csv << ",cavity_volume_m3,cavity_volume_ml,volume_error_mean,volume_error_max,inverted_tets,rest_deviation_rel";
+  if (sim.hasBlood()) csv << ",blood_lost,blood_density_error_mean,blood_density_error_max,blood_max_speed_m_s";
+  csv << '\n';
   csv.precision(9);
 
   const bool vtk = options.vtk || scenario.output.vtk;
-  io::PvdSeries series(outDir / "wall.pvd");
+  const std::string framePrefix = sim.hasHeart() ? "wall" : "blood";
+  io::PvdSeries series(outDir / (framePrefix + ".pvd"));
   auto writeFrame = [&](std::int64_t step) {
-    const std::string name = "wall_" + std::to_string(step) + ".vtu";
-    io::writeVtu(outDir / name, wallFrame(sim));
+    const std::string name = framePrefix + "_" + std::to_string(step) + ".vtu";
+    io::writeVtu(outDir / name, sim.hasHeart() ? wallFrame(sim) : bloodFrame(sim));
     series.add(sim.time(), name);
   };
 
@@ -150,7 +208,8 @@ int runCommand(const RunOptions& options) {
   }
   const auto steps = static_cast<std::int64_t>(stepCount);
   RunStatistics stats;
-  cardiac::BeatTracker beats(sim.cavityVolume());
+  stats.lastSecondFrom = double(steps) * dt - 1.0;
+  cardiac::BeatTracker beats(sim.hasHeart() ? sim.cavityVolume() : 0.0);
   ProgressBar progress(static_cast<long>(steps));
   double wallSeconds = 0;
   try {
@@ -162,7 +221,7 @@ int runCommand(const RunOptions& options) {
       wallSeconds += secondsSince(stepStart);
 
       const cardiac::TissueStats tissue = sim.tissueStats();
-      const double cavity = sim.cavityVolume();
+      const double cavity = sim.hasHeart() ? double(sim.cavityVolume()) : 0.0;
       if (!tissue.finite || !std::isfinite(cavity)) {
         progress.finish();
         std::cerr << "heartsim: error: simulation became invalid at step " << s + 1 << " (t = " << sim.time()
@@ -176,14 +235,29 @@ int runCommand(const RunOptions& options) {
                   << tissue.firstInvertedTet << " at " << tetLocation(sim, tissue.firstInvertedTet) << ")\n";
         return kExitInvalidSimulation;
       }
-      stats.volumeErrorMax = std::max(stats.volumeErrorMax, double(tissue.volumeErrorMax));
-      stats.volumeErrorMeanSum += double(tissue.volumeErrorMean);
-      stats.cavityMin = std::min(stats.cavityMin, cavity);
-      stats.cavityMax = std::max(stats.cavityMax, cavity);
-      beats.record(startTime, sim.lastPhase(), cavity);
-      csv << s + 1 << ',' << sim.time() << ',' << cardiac::phaseName(sim.lastPhase()) << ',' << cavity << ','
-          << cavity * 1e6 << ',' << tissue.volumeErrorMean << ',' << tissue.volumeErrorMax << ','
-          << tissue.invertedTets << ',' << sim.restDeviationRelative() << '\n';
+      csv << s + 1 << ',' << sim.time() << ',' << (sim.hasHeart() ? cardiac::phaseName(sim.lastPhase()) : "none");
+      if (sim.hasHeart()) {
+        stats.volumeErrorMax = std::max(stats.volumeErrorMax, double(tissue.volumeErrorMax));
+        stats.volumeErrorMeanSum += double(tissue.volumeErrorMean);
+        stats.cavityMin = std::min(stats.cavityMin, cavity);
+        stats.cavityMax = std::max(stats.cavityMax, cavity);
+        beats.record(startTime, sim.lastPhase(), cavity);
+        csv << ',' << cavity << ',' << cavity * 1e6 << ',' << tissue.volumeErrorMean << ','
+            << tissue.volumeErrorMax << ',' << tissue.invertedTets << ',' << sim.restDeviationRelative();
+      }
+      if (sim.hasBlood()) {
+        const cardiac::BloodStats blood = sim.bloodStats();
+        stats.bloodLostMax = std::max(stats.bloodLostMax, blood.lost);
+        stats.bloodSpeedMax = std::max(stats.bloodSpeedMax, blood.maxSpeed);
+        if (sim.time() > stats.lastSecondFrom) {
+          stats.densityErrorMeanSum += blood.densityErrorMean;
+          stats.densityErrorMax = std::max(stats.densityErrorMax, blood.densityErrorMax);
+          ++stats.lastSecondSteps;
+        }
+        csv << ',' << blood.lost << ',' << blood.densityErrorMean << ',' << blood.densityErrorMax << ','
+            << blood.maxSpeed;
+      }
+      csv << '\n';
       if (vtk && (s + 1) % scenario.output.vtkEvery == 0) writeFrame(s + 1);
       progress.update(static_cast<long>(s + 1), sim.time());
     }
@@ -198,8 +272,6 @@ int runCommand(const RunOptions& options) {
     return kExitFailure;
   }
 
-  const cardiac::TissueStats finalTissue = sim.tissueStats();
-  const pbd::MeshQuality quality = pbd::measureQuality(sim.model().mesh);
   nlohmann::ordered_json report;
   report["scenario"] = scenario.name;
   report["steps"] = steps;
@@ -211,35 +283,22 @@ int runCommand(const RunOptions& options) {
   report["threads"] = threads;
   report["iterations"] = scenario.simulation.iterations;
   report["state_hash"] = hex(pbd::stateHash(sim.particles()));
-  const auto& model = sim.model();
-  report["tissue"] = {
-      {"vertices", model.mesh.vertices.size()},
-      {"tets", model.mesh.tets.size()},
-      {"surface_triangles", model.surface.size()},
-      {"volume_error_max", stats.volumeErrorMax},
-      {"volume_error_mean", steps > 0 ? stats.volumeErrorMeanSum / double(steps) : 0.0},
-      {"inverted_tets", finalTissue.invertedTets},
-      {"rest_deviation_final_rel", sim.restDeviationRelative()},
-      {"min_dihedral_deg", quality.minDihedralDeg},
-      {"max_aspect_ratio", quality.maxAspectRatio},
-  };
-  nlohmann::ordered_json beatList = nlohmann::json::array();
-  for (const auto& b : beats.beats()) {
-    beatList.push_back({{"beat", b.index},
-                        {"start_s", b.startTime},
-                        {"edv_ml", b.edv * 1e6},
-                        {"esv_ml", b.esv * 1e6},
-                        {"stroke_volume_ml", b.strokeVolume() * 1e6},
-                        {"ejection_fraction", b.ejectionFraction()}});
+  if (sim.hasHeart()) addHeartReport(report, sim, stats, beats, steps);
+  if (sim.hasBlood()) {
+    const cardiac::BloodStats blood = sim.bloodStats();
+    const double lastSecondMean =
+        stats.lastSecondSteps > 0 ? stats.densityErrorMeanSum / double(stats.lastSecondSteps) : blood.densityErrorMean;
+    report["blood"] = {
+        {"particles", blood.particles},
+        {"lost", std::max(stats.bloodLostMax, blood.lost)},
+        {"density_error_mean", lastSecondMean},
+        {"density_error_max", stats.lastSecondSteps > 0 ? stats.densityErrorMax : blood.densityErrorMax},
+        {"full_neighbourhood", blood.fullNeighbourhood},
+        {"max_speed_m_s", blood.maxSpeed},
+        {"max_speed_run_m_s", std::max(stats.bloodSpeedMax, blood.maxSpeed)},
+        {"iterations", scenario.blood.iterations},
+    };
   }
-  report["cavity"] = {
-      {"volume_rest_m3", cardiac::cavityVolume(model, model.mesh.vertices)},
-      {"volume_min_m3", steps > 0 ? stats.cavityMin : sim.cavityVolume()},
-      {"volume_max_m3", steps > 0 ? stats.cavityMax : sim.cavityVolume()},
-      {"ejection_fraction", beats.meanEjectionFraction()},
-      {"beats", beatList},
-  };
-  report["beats"] = beats.beats().size();
   report["output_dir"] = outDir.string();
 
   std::ofstream summary(outDir / "summary.json");
@@ -252,9 +311,14 @@ int runCommand(const RunOptions& options) {
     std::cout << report.dump() << std::endl;
   } else {
     std::cerr << "heartsim: " << scenario.name << ": " << steps << " steps in " << wallSeconds << " s ("
-              << report["steps_per_s"].get<double>() << " steps/s, " << threads << " threads); EF "
-              << beats.meanEjectionFraction() << " over " << beats.beats().size() << " beats; results in "
-              << outDir.string() << '\n';
+              << report["steps_per_s"].get<double>() << " steps/s, " << threads << " threads)";
+    if (sim.hasHeart())
+      std::cerr << "; EF " << beats.meanEjectionFraction() << " over " << beats.beats().size() << " beats";
+    if (sim.hasBlood())
+      std::cerr << "; " << report["blood"]["particles"].get<std::size_t>() << " blood particles, "
+                << report["blood"]["lost"].get<std::size_t>() << " lost, density error "
+                << report["blood"]["density_error_mean"].get<double>();
+    std::cerr << "; results in " << outDir.string() << '\n';
   }
   return kExitOk;
 }

@@ -35,63 +35,78 @@ Index buildWall(const Scenario& scenario, const LvModel& model, pbd::Particles& 
 
 }  // namespace
 
-namespace {
-// Blood (the PBF stage) is not simulated yet: asking for it must not be silently ignored.
-const Scenario& checkSupported(const Scenario& scenario) {
-  if (scenario.blood.enabled)
-    throw std::invalid_argument("blood.enabled: blood is not simulated in this version yet; set it to false");
-  return scenario;
-}
-}  // namespace
-
 HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
-    : m_scenario(checkSupported(scenario)),
-      m_model(buildLvModel(scenario.geometry)),
-      m_firstWallParticle(buildWall(m_scenario, m_model, m_particles, m_constraints)),
-      m_cycle(scenario.cycle, m_model, m_firstWallParticle, scenario.simulation.dt) {
+    : m_scenario(scenario), m_threads(threads) {
+  if (scenario.heart && scenario.blood.enabled)
+    throw std::invalid_argument(
+        "blood.enabled: blood inside the heart needs the heart-blood coupling, which this version does not "
+        "have yet; set model.enabled = false to simulate blood in a container");
+  if (!scenario.heart && !scenario.blood.enabled)
+    throw std::invalid_argument("model.enabled: with no heart and no blood (blood.enabled = false) there is "
+                                "nothing to simulate");
   m_solver.dt = scenario.simulation.dt;
   m_solver.iterations = scenario.simulation.iterations;
   m_solver.volumePasses = scenario.simulation.volumePasses;
   m_solver.gravity = scenario.simulation.gravity;
   m_solver.gravityScale[static_cast<std::size_t>(pbd::ParticleKind::Tissue)] = scenario.tissue.gravity ? 1 : 0;
-  m_solver.damping = scenario.tissue.damping;
+  m_solver.damping[static_cast<std::size_t>(pbd::ParticleKind::Tissue)] = scenario.tissue.damping;
   m_solver.threads = threads;
-  assert(m_firstWallParticle == 0 && "cavityVolume reads particle positions as model vertices");
-  m_restVolume.reserve(m_model.mesh.tets.size());
-  for (const pbd::Tet& t : m_model.mesh.tets) {
-    const auto& x = m_model.mesh.vertices;
-    m_restVolume.push_back(pbd::signedTetVolume(x[t[0]], x[t[1]], x[t[2]], x[t[3]]));
+  if (scenario.heart) {
+    m_model.emplace(buildLvModel(scenario.geometry));
+    m_firstWallParticle = buildWall(m_scenario, *m_model, m_particles, m_constraints);
+    m_cycle.emplace(scenario.cycle, *m_model, m_firstWallParticle, scenario.simulation.dt);
+    assert(m_firstWallParticle == 0 && "cavityVolume reads particle positions as model vertices");
+    m_restVolume.reserve(m_model->mesh.tets.size());
+    for (const pbd::Tet& t : m_model->mesh.tets) {
+      const auto& x = m_model->mesh.vertices;
+      m_restVolume.push_back(pbd::signedTetVolume(x[t[0]], x[t[1]], x[t[2]], x[t[3]]));
+    }
+  }
+  m_firstBloodParticle = Index(m_particles.size());
+  if (scenario.blood.enabled) {
+    // Settings first: they validate the parameters before any particle is made.
+    m_fluid = std::make_unique<pbd::FluidSolver>(bloodSolverSettings(scenario, threads));
+    const Real inverseMass = Real(1) / m_fluid->settings().fluid.particleMass;
+    for (const pbd::Vec3& x : bloodStartPositions(scenario)) m_particles.add(x, inverseMass, pbd::ParticleKind::Fluid);
   }
 }
 
 void HeartSimulation::step() {
-  m_lastPhase = m_cycle.phase();
+  if (m_cycle) m_lastPhase = m_cycle->phase();
   pbd::StepHooks hooks;
-  hooks.afterPrediction = [this](pbd::Particles& p) { m_cycle.apply(p.position, p.predicted); };
+  hooks.afterPrediction = [this](pbd::Particles& p) {
+    if (m_cycle) m_cycle->apply(p.position, p.predicted);
+    if (m_fluid) m_fluid->projectDensity(p);
+  };
+  if (m_fluid) hooks.postProcessVelocities = [this](pbd::Particles& p) { m_fluid->postProcessVelocities(p); };
   pbd::step(m_constraints, m_particles, m_solver, hooks);
   ++m_steps;
 }
 
+BloodStats HeartSimulation::bloodStats() const { return measureBlood(m_scenario, m_particles, m_threads); }
+
 Real HeartSimulation::cavityVolume() const {
   // Model vertex v is particle m_firstWallParticle + v; the wall is the first body, so the
   // particle positions are the model's vertex positions.
-  return cardiac::cavityVolume(m_model, m_particles.position);
+  return cardiac::cavityVolume(*m_model, m_particles.position);
 }
 
 TissueStats HeartSimulation::tissueStats() const {
   TissueStats stats;
+  if (!m_model) return stats;
   const auto& x = m_particles.position;
   const Index f = m_firstWallParticle;
   double sum = 0;
-  for (std::size_t i = 0; i < m_model.mesh.tets.size(); ++i) {
-    const pbd::Tet& t = m_model.mesh.tets[i];
+  const auto& tets = m_model->mesh.tets;
+  for (std::size_t i = 0; i < tets.size(); ++i) {
+    const pbd::Tet& t = tets[i];
     const Real v = pbd::signedTetVolume(x[f + t[0]], x[f + t[1]], x[f + t[2]], x[f + t[3]]);
     const Real error = std::abs(v - m_restVolume[i]) / m_restVolume[i];
     stats.volumeErrorMax = std::max(stats.volumeErrorMax, error);
     sum += double(error);
     if (!(v > Real(0)) && stats.invertedTets++ == 0) stats.firstInvertedTet = static_cast<Index>(i);
   }
-  stats.volumeErrorMean = m_model.mesh.tets.empty() ? Real(0) : Real(sum / double(m_model.mesh.tets.size()));
+  stats.volumeErrorMean = tets.empty() ? Real(0) : Real(sum / double(tets.size()));
   for (std::size_t i = 0; i < m_particles.size(); ++i) {
     if (!m_particles.position[i].allFinite() || !m_particles.velocity[i].allFinite()) {
       stats.finite = false;
@@ -103,11 +118,12 @@ TissueStats HeartSimulation::tissueStats() const {
 }
 
 Real HeartSimulation::restDeviationRelative() const {
+  if (!m_model) return 0;
   Real worst = 0;
-  for (std::size_t v = 0; v < m_model.mesh.vertices.size(); ++v) {
-    worst = std::max(worst, (m_particles.position[m_firstWallParticle + v] - m_model.mesh.vertices[v]).norm());
+  for (std::size_t v = 0; v < m_model->mesh.vertices.size(); ++v) {
+    worst = std::max(worst, (m_particles.position[m_firstWallParticle + v] - m_model->mesh.vertices[v]).norm());
   }
-  return worst / m_model.longAxisLength;
+  return worst / m_model->longAxisLength;
 }
 
 }  // namespace hs::cardiac

@@ -1,14 +1,21 @@
 #pragma once
-// The beating heart wall: the LV model as a PBD soft body driven by the cardiac cycle.
-// One step follows thesis Fig. 4.1 / Algorithm 1: external forces and prediction, then the
-// cardiac cycle moves the beating vertices, then the constraints are projected, then
-// velocities are updated. Blood joins this class in a later stage.
+// One simulated world: the beating heart wall (the LV model as a PBD soft body driven by the
+// cardiac cycle) and/or blood (PBF particles). Both live in one particle set and one step,
+// following thesis Fig. 4.1 / Algorithm 1: external forces and prediction, then the cardiac
+// cycle moves the beating vertices and the blood's density constraints are solved, then the
+// wall's constraints are projected, then velocities are updated and the blood's are
+// post-processed (viscosity). The wall particles come first (particle = model vertex), then
+// the blood. Heart-blood coupling is not part of this version: a scenario has either.
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <vector>
 
+#include "cardiac/blood.h"
 #include "cardiac/cardiac_cycle.h"
 #include "cardiac/lv_model.h"
 #include "cardiac/scenario.h"
+#include "pbd/fluid_solver.h"
 #include "pbd/solver.h"
 
 namespace hs::cardiac {
@@ -30,15 +37,22 @@ class HeartSimulation {
   void step();
 
   [[nodiscard]] const Scenario& scenario() const { return m_scenario; }
-  [[nodiscard]] const LvModel& model() const { return m_model; }
+  [[nodiscard]] bool hasHeart() const { return m_model.has_value(); }
+  [[nodiscard]] bool hasBlood() const { return m_fluid != nullptr; }
+  // Heart only (hasHeart()).
+  [[nodiscard]] const LvModel& model() const { return *m_model; }
+  [[nodiscard]] const CardiacCycle& cycle() const { return *m_cycle; }
   [[nodiscard]] const pbd::Particles& particles() const { return m_particles; }
   [[nodiscard]] const pbd::ConstraintSet& constraints() const { return m_constraints; }
-  [[nodiscard]] const CardiacCycle& cycle() const { return m_cycle; }
+  // Blood particles are [firstBloodParticle(), particles().size()).
+  [[nodiscard]] Index firstBloodParticle() const { return m_firstBloodParticle; }
+  [[nodiscard]] BloodStats bloodStats() const;
   [[nodiscard]] double time() const { return double(m_steps) * double(m_solver.dt); }
   [[nodiscard]] std::int64_t stepCount() const { return m_steps; }
   // Phase during the last step (what the wall was doing), Systole before the first.
   [[nodiscard]] Phase lastPhase() const { return m_lastPhase; }
 
+  // Heart only (hasHeart()).
   [[nodiscard]] Real cavityVolume() const;
   [[nodiscard]] TissueStats tissueStats() const;
   // Largest vertex distance from its rest position, divided by the LV long axis.
@@ -46,12 +60,15 @@ class HeartSimulation {
 
  private:
   Scenario m_scenario;
-  LvModel m_model;
+  int m_threads = 1;
+  std::optional<LvModel> m_model;
   pbd::Particles m_particles;
   pbd::ConstraintSet m_constraints;
   pbd::SolverSettings m_solver;
   Index m_firstWallParticle = 0;
-  CardiacCycle m_cycle;
+  Index m_firstBloodParticle = 0;
+  std::optional<CardiacCycle> m_cycle;
+  std::unique_ptr<pbd::FluidSolver> m_fluid;
   std::vector<Real> m_restVolume;  // per model tet
   std::int64_t m_steps = 0;
   Phase m_lastPhase = Phase::Systole;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <iterator>
 
@@ -48,6 +49,14 @@ struct Origin {
 struct ParseState {
   Scenario scenario;
   std::string sphereOrigin;  // where [cycle.sphere] was enabled, for the final check
+  std::string source;        // the file (or built-in) name
+  std::map<std::string, std::string, std::less<>> keyOrigin;  // "file:line" of each key set
+
+  // Where `key` was last set, or the file name when it kept its default.
+  std::string at(std::string_view key) const {
+    const auto it = keyOrigin.find(key);
+    return it != keyOrigin.end() ? it->second : source;
+  }
 };
 
 // Calls onPresent of every known table that is `dotted` or a prefix of it.
@@ -76,6 +85,7 @@ void applyLeaf(ParseState& st, const std::string& dotted, const toml::node& node
   } catch (const ValueError& e) {
     fail(origin.at(e.line != 0 ? e.line : line) + ": " + dotted + ": " + e.message);
   }
+  st.keyOrigin[dotted] = origin.at(line);
   markPresent(st, dotted, origin.at(line));
 }
 
@@ -163,6 +173,22 @@ void validate(const ParseState& st) {
   if (c.sphereEnabled && !(c.sphereRadius > 0))
     fail(st.sphereOrigin + ": cycle.sphere.radius: required when [cycle.sphere] is used, expected " +
          detail::findKey("cycle.sphere.radius")->expect + ", got nothing");
+  const auto& b = st.scenario.blood;
+  auto number = [](double v) { return detail::formatNumber(v); };
+  if (b.supportRadius <= b.spacing)
+    fail(st.at("blood.support_radius") + ": blood.support_radius: must be larger than blood.spacing (" +
+         number(b.spacing) + " m) so that each particle has neighbours, got " + number(b.supportRadius) + " m");
+  for (int a = 0; a < 3; ++a) {
+    if (b.blockMax[a] <= b.blockMin[a])
+      fail(st.at("blood.block_max") + ": blood.block_max: must be larger than blood.block_min on every axis, got " +
+           detail::findKey("blood.block_max")->get(st.scenario) + " and " +
+           detail::findKey("blood.block_min")->get(st.scenario));
+    const auto& box = st.scenario.container;
+    if (box.max[a] <= box.min[a])
+      fail(st.at("container.max") + ": container.max: must be larger than container.min on every axis, got " +
+           detail::findKey("container.max")->get(st.scenario) + " and " +
+           detail::findKey("container.min")->get(st.scenario));
+  }
 }
 
 std::string builtinList() {
@@ -176,6 +202,7 @@ std::string builtinList() {
 Scenario parseScenario(std::string_view tomlText, const std::string& sourceName,
                        const std::vector<std::string>& overrides) {
   ParseState st;
+  st.source = sourceName;
   const std::string stem = std::filesystem::path(sourceName).stem().string();
   if (!stem.empty()) st.scenario.name = stem;
 

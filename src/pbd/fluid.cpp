@@ -30,7 +30,34 @@ Real tensileCorrection(const SphKernels& kernels, const FluidSettings& settings,
   return -settings.tensileK * power;
 }
 
+// sum_j W_poly6(|x_i - x_j|) over the list of i, self term W(0) first.
+Real poly6Sum(const std::vector<Vec3>& positions, const NeighbourLists& lists, const SphKernels& kernels, Index i,
+              Real selfTerm) {
+  const Vec3& xi = positions[i];
+  Real sum = selfTerm;
+  for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k)
+    sum += poly6(kernels, (xi - positions[lists.indices[k]]).squaredNorm());
+  return sum;
+}
+
 }  // namespace
+
+Real latticeGradientSum(const SphKernels& kernels, Real spacing, Real mass, Real restDensity) {
+  // Same sums as computeLambdas, over the lattice offsets inside the support.
+  const int reach = int(std::ceil(kernels.h / spacing));
+  const Real scale = mass / restDensity;
+  Vec3 gradI = Vec3::Zero();
+  Real sumSqJ = 0;
+  for (int k = -reach; k <= reach; ++k)
+    for (int j = -reach; j <= reach; ++j)
+      for (int i = -reach; i <= reach; ++i) {
+        const Vec3 r = -spacing * Vec3(Real(i), Real(j), Real(k));
+        const Vec3 g = scale * spikyGradient(kernels, r, r.norm());
+        gradI += g;
+        sumSqJ += g.squaredNorm();
+      }
+  return gradI.squaredNorm() + sumSqJ;
+}
 
 void computeDensities(const std::vector<Vec3>& positions, const NeighbourLists& lists,
                       std::span<const Index> subset, const SphKernels& kernels,
@@ -43,15 +70,8 @@ void computeDensities(const std::vector<Vec3>& positions, const NeighbourLists& 
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
-    const Vec3& xi = positions[i];
     // rho_i = m sum_j W(x_i - x_j) (PBF eq. 2), self term first.
-    Real sum = selfTerm;
-    for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k) {
-      const Index j = lists.indices[k];
-      const Vec3 r = xi - positions[j];
-      sum += poly6(kernels, r.squaredNorm());
-    }
-    densities[i] = m * sum;
+    densities[i] = m * poly6Sum(positions, lists, kernels, i, selfTerm);
   }
 }
 
@@ -70,12 +90,15 @@ void computeDensityConstraints(const std::vector<Real>& densities, std::span<con
 
 void computeLambdas(const std::vector<Vec3>& positions, const NeighbourLists& lists,
                     std::span<const Index> subset, const SphKernels& kernels,
-                    const FluidSettings& settings, const std::vector<Real>& densities,
+                    const FluidSettings& settings, std::vector<Real>& densities,
                     std::vector<Real>& lambdas, int threads) {
   checkInputs(positions, lists, kernels, settings);
-  assert(densities.size() == positions.size());
+  fitOutput(densities, positions.size());
   fitOutput(lambdas, positions.size());
   const Real invRho0 = Real(1) / settings.restDensity;
+  const Real m = settings.particleMass;
+  const Real selfTerm = poly6(kernels, Real(0));
+  const bool unilateral = settings.unilateralDensity;
   const Real gradScale = settings.particleMass * invRho0;  // m/rho0, see fluid.h
   const std::ptrdiff_t count = std::ptrdiff_t(subset.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
@@ -83,18 +106,25 @@ void computeLambdas(const std::vector<Vec3>& positions, const NeighbourLists& li
     const Index i = subset[std::size_t(s)];
     const Vec3& xi = positions[i];
     // PBF eq. 8: grad_{p_i} C_i = (m/rho0) sum_j grad W_ij, grad_{p_j} C_i = -(m/rho0) grad W_ij.
+    // One loop for rho_i (PBF eq. 2, self term first) and the gradient sums.
+    Real kernelSum = selfTerm;
     Vec3 gradI = Vec3::Zero();
     Real sumSqJ = 0;
     for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k) {
       const Index j = lists.indices[k];
       const Vec3 r = xi - positions[j];
-      const Vec3 g = gradScale * spikyGradient(kernels, r, r.norm());
+      const Real r2 = r.squaredNorm();
+      kernelSum += poly6(kernels, r2);
+      const Vec3 g = gradScale * spikyGradient(kernels, r, std::sqrt(r2));
       gradI += g;
       sumSqJ += g.squaredNorm();
     }
-    const Real c = densities[i] * invRho0 - Real(1);  // PBF eq. 1
+    const Real rho = m * kernelSum;
+    densities[i] = rho;
+    const Real c = rho * invRho0 - Real(1);  // PBF eq. 1
     // PBF eq. 11: lambda_i = -C_i / (sum_k |grad_{p_k} C_i|^2 + eps).
-    lambdas[i] = -c / (gradI.squaredNorm() + sumSqJ + settings.relaxation);
+    const Real lambda = -c / (gradI.squaredNorm() + sumSqJ + settings.relaxation);
+    lambdas[i] = unilateral ? std::min(lambda, Real(0)) : lambda;
   }
 }
 
@@ -110,6 +140,8 @@ void computeDensityCorrections(const std::vector<Vec3>& positions, const Neighbo
   const Real deltaQ = settings.tensileDeltaQRatio * kernels.h;
   const Real wq = poly6(kernels, deltaQ * deltaQ);
   const Real invWq = wq > Real(0) ? Real(1) / wq : Real(0);
+  const Real contact = 2 * settings.collisionRadius;  // r_i + r_j of thesis eq. 4.6
+  const Real contact2 = contact * contact;
   const std::ptrdiff_t count = std::ptrdiff_t(subset.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
@@ -118,41 +150,101 @@ void computeDensityCorrections(const std::vector<Vec3>& positions, const Neighbo
     const Real li = lambdas[i];
     // PBF eq. 12: dp_i = (m/rho0) sum_j (lambda_i + lambda_j + s_corr) grad W(p_i - p_j).
     Vec3 sum = Vec3::Zero();
+    Vec3 push = Vec3::Zero();
     for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k) {
       const Index j = lists.indices[k];
       const Vec3 r = xi - positions[j];
       const Real r2 = r.squaredNorm();
+      const Real d = std::sqrt(r2);
       Real weight = li + lambdas[j];
       if (tensile) weight += tensileCorrection(kernels, settings, invWq, r2);
-      sum += weight * spikyGradient(kernels, r, std::sqrt(r2));
+      sum += weight * spikyGradient(kernels, r, d);
+      // Thesis eq. 4.6: C = |x_ij| - 2r >= 0; equal masses move half the overlap each.
+      if (r2 < contact2 && d > Real(0)) push += (Real(0.5) * (contact - d) / d) * r;
     }
-    corrections[i] = scale * sum;
+    corrections[i] = scale * sum + push;
   }
 }
 
-void applyXsphViscosity(const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,
-                        const NeighbourLists& lists, std::span<const Index> subset,
-                        const SphKernels& kernels, const FluidSettings& settings,
-                        std::vector<Vec3>& newVelocities, int threads) {
+void applyViscosity(const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,
+                    const NeighbourLists& lists, std::span<const Index> subset,
+                    const SphKernels& kernels, const FluidSettings& settings, Real dt,
+                    std::vector<Vec3>& newVelocities, int threads) {
   checkInputs(positions, lists, kernels, settings);
   assert(velocities.size() == positions.size());
   assert(&velocities != &newVelocities);
   fitOutput(newVelocities, positions.size());
   const Real c = settings.xsphViscosity;
+  // dt 2(d+2) nu m/rho0 with d = 3 (Monaghan 2005 eq. 6.13), and the 0.01 h^2 that keeps the
+  // denominator away from zero for close pairs.
+  const Real laplace = dt * Real(10) * settings.kinematicViscosity * settings.particleMass / settings.restDensity;
+  const Real softening = Real(0.01) * kernels.h2;
   const std::ptrdiff_t count = std::ptrdiff_t(subset.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
     const Vec3& xi = positions[i];
     const Vec3& vi = velocities[i];
-    // PBF eq. 17: v_i <- v_i + c sum_j (v_j - v_i) W_poly6(x_i - x_j).
-    Vec3 sum = Vec3::Zero();
+    Vec3 xsph = Vec3::Zero();
+    Vec3 viscous = Vec3::Zero();
     for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k) {
       const Index j = lists.indices[k];
       const Vec3 r = xi - positions[j];
-      sum += poly6(kernels, r.squaredNorm()) * (velocities[j] - vi);
+      const Real r2 = r.squaredNorm();
+      const Vec3 vij = vi - velocities[j];
+      // PBF eq. 17: c sum_j (v_j - v_i) W_poly6(x_i - x_j).
+      xsph -= poly6(kernels, r2) * vij;
+      // Monaghan 2005 eq. 6.13: (v_ij . x_ij)/(|x_ij|^2 + 0.01 h^2) grad W(x_ij).
+      viscous += (vij.dot(r) / (r2 + softening)) * spikyGradient(kernels, r, std::sqrt(r2));
     }
-    newVelocities[i] = vi + c * sum;
+    newVelocities[i] = vi + c * xsph + laplace * viscous;
+  }
+}
+
+void applyVorticityConfinement(const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,
+                               const NeighbourLists& lists, std::span<const Index> subset,
+                               const SphKernels& kernels, const FluidSettings& settings, Real dt,
+                               std::vector<Vec3>& vorticity, std::vector<Vec3>& newVelocities,
+                               int threads) {
+  checkInputs(positions, lists, kernels, settings);
+  assert(&velocities != &newVelocities);
+  fitOutput(vorticity, positions.size());
+  fitOutput(newVelocities, positions.size());
+  const Real scale = settings.particleMass / settings.restDensity;
+  const std::ptrdiff_t count = std::ptrdiff_t(subset.size());
+  // PBF eq. 15: omega_i = sum_j (m/rho0) (v_i - v_j) x grad_i W(x_ij), the SPH curl of v
+  // (= PBF's sum_j (v_j - v_i) x grad_j W; a rigid rotation Omega gives omega ~ 2 Omega).
+  // Neighbours outside the subset keep vorticity 0: the subset is normally all fluid.
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::ptrdiff_t s = 0; s < count; ++s) {
+    const Index i = subset[std::size_t(s)];
+    Vec3 omega = Vec3::Zero();
+    for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k) {
+      const Index j = lists.indices[k];
+      const Vec3 r = positions[i] - positions[j];
+      omega += (velocities[i] - velocities[j]).cross(spikyGradient(kernels, r, r.norm()));
+    }
+    vorticity[i] = scale * omega;
+  }
+  // PBF eq. 16: f = eps (N x omega), N = eta/|eta|, eta = grad |omega| (SPH difference form).
+  const Real eps = settings.vorticityConfinement;
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::ptrdiff_t s = 0; s < count; ++s) {
+    const Index i = subset[std::size_t(s)];
+    const Real wi = vorticity[i].norm();
+    Vec3 eta = Vec3::Zero();
+    for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k) {
+      const Index j = lists.indices[k];
+      const Vec3 r = positions[i] - positions[j];
+      // grad |omega| at i ~ sum_j (m/rho0)(|omega_j| - |omega_i|) grad_i W(x_ij); grad_i W
+      // points from i towards j, so a larger |omega_j| turns eta towards j.
+      eta += (vorticity[j].norm() - wi) * spikyGradient(kernels, r, r.norm());
+    }
+    eta *= scale;
+    const Real len = eta.norm();
+    Vec3 v = velocities[i];
+    if (len > Real(1e-12)) v += dt * eps * (eta / len).cross(vorticity[i]);
+    newVelocities[i] = v;
   }
 }
 

@@ -3,10 +3,13 @@
 // "Position Based Fluids", ACM TOG 32(4), sections 3-5 (thesis section 4.2, eq. 4.7-4.11).
 //
 // One Jacobi iteration of the density solve is
-//   computeDensities           rho_i = sum_j m W_poly6(p_i - p_j, h)             (PBF eq. 2)
-//   computeLambdas             lambda_i = -C_i / (sum_k |grad_{p_k} C_i|^2 + eps) (PBF eq. 11)
+//   computeLambdas             rho_i = sum_j m W_poly6(p_i - p_j, h)             (PBF eq. 2)
+//                              lambda_i = -C_i / (sum_k |grad_{p_k} C_i|^2 + eps) (PBF eq. 11)
 //   computeDensityCorrections  dp_i = (m/rho0) sum_j (lambda_i + lambda_j + s_corr) grad W  (eq. 12)
-// after which the caller adds dp_i to p_i. XSPH (PBF eq. 17) post-processes velocities.
+//                              plus the particle-particle collision of thesis eq. 4.6
+// after which the caller adds dp_i to p_i. applyViscosity (XSPH, PBF eq. 17, and the SPH
+// Laplacian of a physical viscosity) and applyVorticityConfinement (PBF eq. 15-16)
+// post-process velocities.
 //
 // Mass convention: PBF (and thesis eq. 4.9-4.10) write grad C and dp with a factor 1/rho0,
 // which assumes unit particle mass (the thesis says so under eq. 4.11). With a physical mass m
@@ -48,16 +51,38 @@ struct FluidSettings {
   Real tensileK = Real(0.1);
   int tensileN = 4;
   Real tensileDeltaQRatio = Real(0.2);  // deltaQ = ratio * h
+  // Unilateral density constraint C_i = max(rho_i/rho0 - 1, 0), i.e. lambda_i <- min(lambda_i, 0):
+  // corrections only push apart. PBF's bilateral C also pulls under-dense particles together;
+  // with no boundary particles, every particle at a wall or the free surface is under-dense
+  // (a corner of the rest lattice has C = -0.32 at h = 2d) and has a small sum |grad C|^2, so
+  // the pull is huge (measured: 16 m/s after one step, the column explodes within 0.1 s).
+  // SPlisHSPlasH's PBF clamps C the same way (Bender et al., TimeStepPBF).
+  bool unilateralDensity = true;
+  // Particle-particle collision, thesis eq. 4.6: C(x_i, x_j) = |x_ij| - (r_i + r_j) >= 0 with
+  // r_i = r_j = collisionRadius (m); 0 switches it off. Solved in the same Jacobi pass as the
+  // density: each particle of an overlapping pair moves half the overlap apart.
+  Real collisionRadius = 0;
   // c of PBF eq. 17, units m^3 (W is 1/m^3). Stable only while c sum_j W_ij < 1, and a full
   // neighbourhood has sum_j W_ij ~ rho0/m, so c must stay below m/rho0 (= d^3 at rest spacing d:
   // 0.0041 m^3 for the thesis's d = 0.16 m). Default: 0.003, what the settling test uses.
   Real xsphViscosity = Real(0.003);
+  // nu = mu / rho0, m^2/s: the kinematic viscosity of the liquid, applied explicitly by the
+  // SPH Laplacian of Monaghan 2005 ("Smoothed particle hydrodynamics", Rep. Prog. Phys. 68,
+  // eq. 6.13; after Morris et al. 1997) in applyViscosity. 0 = inviscid.
+  Real kinematicViscosity = 0;
+  // epsilon of PBF eq. 16 (vorticity confinement): the acceleration is eps (N x omega) with
+  // omega in 1/s, so eps is in m/s. 0 switches it off.
+  Real vorticityConfinement = 0;
 };
 
 // Mass of one particle of a cubic lattice at rest: m = rho0 d^3 (one particle per d^3 cell).
 inline Real particleMassFor(Real restDensity, Real spacing) {
   return restDensity * spacing * spacing * spacing;
 }
+
+// sum_k |grad_{p_k} C_i|^2 of PBF eq. 11 for an interior particle of a cubic lattice of
+// spacing d at rest: the natural scale of the relaxation eps (which is in the same units).
+Real latticeGradientSum(const SphKernels& kernels, Real spacing, Real mass, Real restDensity);
 
 // rho_i = sum_j m W_poly6(|p_i - p_j|, h), j over the neighbours of i and i itself (PBF eq. 2,
 // thesis eq. 4.8). The self term m W_poly6(0) comes first, then the neighbours in list order.
@@ -68,9 +93,11 @@ void computeDensities(const std::vector<Vec3>& positions, const NeighbourLists& 
 // lambda_i = -C_i / (sum_k |grad_{p_k} C_i|^2 + eps), C_i = rho_i/rho0 - 1 (PBF eq. 1, 11;
 // thesis eq. 4.7), with the gradient of PBF eq. 8 (thesis eq. 4.9), spiky kernel:
 //   grad_{p_i} C_i = (m/rho0) sum_j grad W(p_i - p_j),  grad_{p_j} C_i = -(m/rho0) grad W(p_i - p_j).
+// The densities rho_i (as computeDensities) come out of the same neighbour loop. With
+// settings.unilateralDensity, lambda_i = min(lambda_i, 0).
 void computeLambdas(const std::vector<Vec3>& positions, const NeighbourLists& lists,
                     std::span<const Index> subset, const SphKernels& kernels,
-                    const FluidSettings& settings, const std::vector<Real>& densities,
+                    const FluidSettings& settings, std::vector<Real>& densities,
                     std::vector<Real>& lambdas, int threads = 1);
 
 // C_i = rho_i/rho0 - 1 (PBF eq. 1) for the particles of subset (diagnostics and tests).
@@ -79,19 +106,39 @@ void computeDensityConstraints(const std::vector<Real>& densities, std::span<con
                                int threads = 1);
 
 // dp_i = (m/rho0) sum_j (lambda_i + lambda_j + s_corr) grad W_spiky(p_i - p_j) (PBF eq. 12,
-// thesis eq. 4.10), s_corr = -k (W_poly6(|p_i - p_j|)/W_poly6(deltaQ))^n when enabled (eq. 13).
+// thesis eq. 4.10), s_corr = -k (W_poly6(|p_i - p_j|)/W_poly6(deltaQ))^n when enabled (eq. 13),
+// plus sum_j (1/2)(2r - |p_ij|) p_ij/|p_ij| over pairs closer than 2r (thesis eq. 4.6, equal
+// masses) when settings.collisionRadius = r > 0.
 void computeDensityCorrections(const std::vector<Vec3>& positions, const NeighbourLists& lists,
                                std::span<const Index> subset, const SphKernels& kernels,
                                const FluidSettings& settings, const std::vector<Real>& lambdas,
                                std::vector<Vec3>& corrections, int threads = 1);
 
-// XSPH viscosity (PBF eq. 17): v_i^new = v_i + c sum_j (v_j - v_i) W_poly6(|x_i - x_j|, h).
-// Thesis eq. 4.11 writes v_i - gamma sum_j (m/rho_i)(v_i - v_j) W, which has the same sign
-// (-(v_i - v_j) = v_j - v_i) and an extra m/rho_i factor; PBF's c absorbs it (c ~ gamma m/rho0).
-// Reads velocities, writes newVelocities (must not be the same vector: Jacobi update).
-void applyXsphViscosity(const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,
-                        const NeighbourLists& lists, std::span<const Index> subset,
-                        const SphKernels& kernels, const FluidSettings& settings,
-                        std::vector<Vec3>& newVelocities, int threads = 1);
+// Viscosity in the velocity post-process (thesis Algorithm 1 line 15), one neighbour loop:
+//   v_i^new = v_i + c sum_j (v_j - v_i) W_poly6(|x_ij|, h)                         (XSPH)
+//         + dt 2(d+2) nu (m/rho0) sum_j (v_ij . x_ij)/(|x_ij|^2 + 0.01 h^2) grad W(x_ij)
+// with d = 3, v_ij = v_i - v_j, x_ij = x_i - x_j. The first term is XSPH (PBF eq. 17). Thesis
+// eq. 4.11 writes v_i - gamma sum_j (m/rho_i)(v_i - v_j) W, the same sign and an extra m/rho_i
+// factor: c = gamma m/rho0 (rho0 rather than rho_i keeps the pair terms antisymmetric, so
+// momentum is conserved). The second term is the SPH Laplacian nu lap(v) of a Newtonian liquid
+// (Monaghan 2005 eq. 6.13), explicit, stable for dt < 0.125 h^2/nu; it gives the liquid its
+// physical viscosity, which XSPH (a velocity filter) does not. Reads velocities, writes
+// newVelocities (must not be the same vector: Jacobi update).
+void applyViscosity(const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,
+                    const NeighbourLists& lists, std::span<const Index> subset,
+                    const SphKernels& kernels, const FluidSettings& settings, Real dt,
+                    std::vector<Vec3>& newVelocities, int threads = 1);
+
+// Vorticity confinement (PBF eq. 15-16, after Fedkiw et al. 2001), adds back small-scale
+// swirl that the position solve and XSPH dissipate:
+//   omega_i = sum_j (m/rho0) (v_i - v_j) x grad_i W(x_ij)  (SPH curl of v)
+//   eta_i = sum_j (m/rho0) (|omega_j| - |omega_i|) grad_i W(x_ij)  (gradient of |omega|), N = eta/|eta|
+//   v_i += dt eps (N x omega_i)
+// `vorticity` is a work array (resized). Reads velocities, writes newVelocities.
+void applyVorticityConfinement(const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,
+                               const NeighbourLists& lists, std::span<const Index> subset,
+                               const SphKernels& kernels, const FluidSettings& settings, Real dt,
+                               std::vector<Vec3>& vorticity, std::vector<Vec3>& newVelocities,
+                               int threads = 1);
 
 }  // namespace hs::pbd

@@ -49,8 +49,8 @@ void FluidSolver::step(Particles& particles) {
   projectDensity(particles);
   // Lines 20-21: v <- (p - x)/dt, x <- p.
   updateVelocities(particles, m_settings.base);
-  // Line 22: XSPH viscosity on the new velocities.
-  applyViscosity(particles);
+  // Line 22: wall contacts, vorticity confinement and viscosity on the new velocities.
+  postProcessVelocities(particles);
 }
 
 void FluidSolver::projectDensity(Particles& particles) {
@@ -61,28 +61,31 @@ void FluidSolver::projectDensity(Particles& particles) {
   const std::vector<Plane>& walls = m_settings.walls;
   const auto n = std::ptrdiff_t(m_fluid.size());
   const bool parallel = std::size_t(n) >= kParallelThreshold;
+  m_gathered.resize(m_fluid.size());
+#pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
+  for (std::ptrdiff_t s = 0; s < n; ++s) m_gathered[s] = particles.predicted[m_fluid[s]];
+
+  // Lines 5-7: neighbours of the predicted positions, once per step, cell edge = h. The
+  // solve then runs in the grid's cell order (slots).
+  m_grid.build(m_gathered, fluid.supportRadius);
+  m_grid.buildSlotNeighbourLists(fluid.supportRadius, m_lists);
+  const std::vector<Index>& sorted = m_grid.sortedIndices();
+  m_slotParticle.resize(m_fluid.size());
   m_p.resize(m_fluid.size());
   m_w.resize(m_fluid.size());
 #pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
-  for (std::ptrdiff_t s = 0; s < n; ++s) {
-    m_p[s] = particles.predicted[m_fluid[s]];
-    m_w[s] = particles.inverseMass[m_fluid[s]];
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    const Index particle = m_fluid[sorted[k]];
+    m_slotParticle[k] = particle;
+    m_p[k] = m_grid.sortedPositions()[k];
+    m_w[k] = particles.inverseMass[particle];
   }
-
-  // Lines 5-7: neighbours of the predicted positions, once per step, cell edge = h.
-  m_grid.build(m_p, fluid.supportRadius);
-  m_grid.buildNeighbourLists(m_p, fluid.supportRadius, m_lists);
 
   const std::span<const Index> all(m_slots);
   for (int iteration = 0; iteration < m_settings.iterations; ++iteration) {
-    // Lines 9-11: rho_i (PBF eq. 2), lambda_i (eq. 11); lines 12-15: dp_i (eq. 12).
-    computeDensities(m_p, m_lists, all, m_kernels, fluid, m_density, threads);
+    // Lines 9-11: rho_i (PBF eq. 2) and lambda_i (eq. 11); lines 12-15: dp_i (eq. 12) and the
+    // particle collisions (thesis eq. 4.6).
     computeLambdas(m_p, m_lists, all, m_kernels, fluid, m_density, m_lambda, threads);
-    if (m_settings.unilateralDensity) {
-      // C_i = max(C_i, 0): lambda_i = -C_i / (S_i + eps) <= 0 (see fluid_solver.h).
-#pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
-      for (std::ptrdiff_t s = 0; s < n; ++s) m_lambda[s] = std::min(m_lambda[s], Real(0));
-    }
     computeDensityCorrections(m_p, m_lists, all, m_kernels, fluid, m_lambda, m_dp, threads);
     // Lines 16-18: p_i <- p_i + dp_i (Jacobi: all dp from the same p), then collision
     // response against the walls, C = n.p - (d + r) >= 0 (thesis eq. 4.5).
@@ -96,24 +99,45 @@ void FluidSolver::projectDensity(Particles& particles) {
   }
 
 #pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
-  for (std::ptrdiff_t s = 0; s < n; ++s) particles.predicted[m_fluid[s]] = m_p[s];
+  for (std::ptrdiff_t k = 0; k < n; ++k) particles.predicted[m_slotParticle[k]] = m_p[k];
 }
 
-void FluidSolver::applyViscosity(Particles& particles) {
-  if (m_fluid.empty() || m_lists.offsets.size() != m_fluid.size() + 1) return;
+void FluidSolver::postProcessVelocities(Particles& particles) {
+  if (m_slotParticle.empty() || m_lists.offsets.size() != m_slotParticle.size() + 1) return;
   const int threads = m_settings.base.threads;
-  const auto n = std::ptrdiff_t(m_fluid.size());
+  const auto n = std::ptrdiff_t(m_slotParticle.size());
   const bool parallel = std::size_t(n) >= kParallelThreshold;
-  m_v.resize(m_fluid.size());
+  const std::span<const Index> all(m_slots);
+  const std::vector<Plane>& walls = m_settings.walls;
+  // Contact threshold: the projection leaves a touching particle at exactly r from the wall.
+  const Real touching = m_settings.particleRadius * (1 + Real(1e-3));
+  m_v.resize(m_slotParticle.size());
   // Positions: x = p after the velocity update, so m_p already holds them.
 #pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
-  for (std::ptrdiff_t s = 0; s < n; ++s) m_v[s] = particles.velocity[m_fluid[s]];
-  // PBF eq. 17: v_i <- v_i + c sum_j (v_j - v_i) W_poly6(x_i - x_j, h).
-  applyXsphViscosity(m_p, m_v, m_lists, std::span<const Index>(m_slots), m_kernels, m_settings.fluid,
-                     m_vNew, threads);
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    Vec3 v = particles.velocity[m_slotParticle[k]];
+    // Inelastic wall contact (Mueller et al. 2007, "Position based dynamics", section 3.5:
+    // colliding particles' velocities are modified for restitution): a particle touching a
+    // wall keeps no velocity into it. Otherwise the projection's push turns into a velocity
+    // towards the wall at the next step and wall particles jitter at rest.
+    for (const Plane& plane : walls) {
+      const Real vn = v.dot(plane.normal);
+      if (vn < Real(0) && plane.normal.dot(m_p[k]) - plane.offset <= touching) v -= vn * plane.normal;
+    }
+    m_v[k] = v;
+  }
+  const FluidSettings& fluid = m_settings.fluid;
+  const Real dt = m_settings.base.dt;
+  if (fluid.vorticityConfinement > Real(0)) {
+    // PBF eq. 15-16, before the viscosity (Macklin & Mueller Algorithm 1 line 22).
+    applyVorticityConfinement(m_p, m_v, m_lists, all, m_kernels, fluid, dt, m_vorticity, m_vNew, threads);
+    m_v.swap(m_vNew);
+  }
+  // XSPH (PBF eq. 17, thesis eq. 4.11) and the physical viscosity, fluid.h.
+  pbd::applyViscosity(m_p, m_v, m_lists, all, m_kernels, fluid, dt, m_vNew, threads);
 #pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
-  for (std::ptrdiff_t s = 0; s < n; ++s) {
-    if (m_w[s] > Real(0)) particles.velocity[m_fluid[s]] = m_vNew[s];
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    if (m_w[k] > Real(0)) particles.velocity[m_slotParticle[k]] = m_vNew[k];
   }
 }
 

@@ -7,17 +7,20 @@
 //     rho_i, lambda_i (PBF eq. 2, 11), dp_i (eq. 12)   (fluid.h, Jacobi)
 //     p_i <- p_i + dp_i, then the wall planes          (collision response, thesis eq. 4.5)
 //   v <- (p - x)/dt, x <- p                            (Alg. 1 lines 20-21, solver.h)
-//   XSPH viscosity on the new velocities (PBF eq. 17)  (Alg. 1 line 22)
+//   wall contacts, vorticity confinement, viscosity   (Alg. 1 line 22; PBF eq. 15-17)
 //
-// The density solve works on compact arrays holding only the fluid particles (slot s is
-// particle fluidIndices()[s]); the neighbour grid and its CSR lists are built over those,
-// so tissue particles never enter the density estimate. All loops are per-particle gathers,
-// so the result is bitwise identical for any thread count.
+// The density solve works on compact arrays holding only the fluid particles, in the cell
+// order of the neighbour grid (slot k is particle slotParticles()[k]): the grid sorts the
+// particles by cell every step, so neighbours are close in memory and each CSR list is
+// already in increasing slot order. Tissue particles never enter the density estimate. All
+// loops are per-particle gathers, so the result is bitwise identical for any thread count.
+// After warm-up a step allocates nothing: every buffer keeps its capacity.
 //
 // Mixed sets: step() runs the solver.h phases over the whole set, so tissue particles in the
 // same set are integrated too (gravity, prediction, velocity update, no constraints). A world
 // with tissue should call applyExternalForces/predictPositions itself and use
-// projectDensity() between prediction and the velocity update and applyViscosity() after it.
+// projectDensity() between prediction and the velocity update and postProcessVelocities()
+// after it.
 #include <span>
 #include <vector>
 
@@ -36,13 +39,6 @@ struct FluidStepSettings {
   FluidSettings fluid;          // rho0, m, h, eps, s_corr, XSPH c
   Real particleRadius = Real(0.08);  // m, distance kept from the walls (thesis: 0.08 m)
   std::vector<Plane> walls;     // normals point into the fluid's allowed half-space
-  // Unilateral density constraint C_i = max(rho_i/rho0 - 1, 0), i.e. lambda_i <- min(lambda_i, 0):
-  // corrections only push apart. PBF's bilateral C also pulls under-dense particles together;
-  // with no boundary particles, every particle at a wall or the free surface is under-dense
-  // (a corner of the rest lattice has C = -0.32 at h = 2d) and small sum |grad C|^2, so the
-  // pull is huge (measured: 16 m/s after one step, the column explodes within 0.1 s).
-  // SPlisHSPlasH's PBF clamps C the same way (Bender et al., TimeStepPBF).
-  bool unilateralDensity = true;
 };
 
 class FluidSolver {
@@ -57,17 +53,20 @@ class FluidSolver {
 
   // The phases, for a caller that integrates a mixed set itself. projectDensity expects
   // particles.predicted to hold the predicted positions; it builds the neighbour lists and
-  // runs the iterations. applyViscosity uses the lists of the last projectDensity.
+  // runs the iterations. postProcessVelocities (wall contacts, vorticity confinement,
+  // viscosity) uses the lists of the last projectDensity.
   void projectDensity(Particles& particles);
-  void applyViscosity(Particles& particles);
+  void postProcessVelocities(Particles& particles);
 
   // Forget the cached fluid index list (call after changing kinds without changing the
   // particle count; a change of count is detected automatically).
   void invalidateFluidIndices() { m_indexedCount = kNotIndexed; }
 
   std::span<const Index> fluidIndices() const { return m_fluid; }
-  // Diagnostics of the last projectDensity, in compact (fluid slot) order: neighbour lists
-  // built on the predicted positions, and densities of the last iteration (before its dp).
+  // Diagnostics of the last projectDensity, in slot order: the particle of each slot,
+  // neighbour lists (of slots) built on the predicted positions, and densities of the last
+  // iteration (before its dp).
+  std::span<const Index> slotParticles() const { return m_slotParticle; }
   const NeighbourLists& neighbourLists() const { return m_lists; }
   const std::vector<Real>& densities() const { return m_density; }
 
@@ -81,16 +80,19 @@ class FluidSolver {
   NeighbourGrid m_grid;
 
   std::size_t m_indexedCount = kNotIndexed;  // particle count m_fluid was built for
-  std::vector<Index> m_fluid;      // particle index of each fluid slot
+  std::vector<Index> m_fluid;      // the fluid particles, in particle order
+  std::vector<Vec3> m_gathered;    // their predicted positions, in that order (grid input)
   std::vector<Index> m_slots;      // 0 .. fluid count - 1: the subset for fluid.h
-  std::vector<Vec3> m_p;           // compact predicted positions
-  std::vector<Real> m_w;           // compact inverse masses
-  NeighbourLists m_lists;
+  std::vector<Index> m_slotParticle;  // particle index of each slot (cell order)
+  std::vector<Vec3> m_p;           // slot predicted positions
+  std::vector<Real> m_w;           // slot inverse masses
+  NeighbourLists m_lists;          // over slots
   std::vector<Real> m_density;
   std::vector<Real> m_lambda;
   std::vector<Vec3> m_dp;
-  std::vector<Vec3> m_v;           // compact velocities (XSPH input)
-  std::vector<Vec3> m_vNew;        // XSPH output
+  std::vector<Vec3> m_v;           // slot velocities (viscosity input)
+  std::vector<Vec3> m_vNew;        // viscosity output
+  std::vector<Vec3> m_vorticity;   // vorticity confinement work array
 };
 
 // A cubic lattice of spacing d filling the box [lower, upper]: one particle at the centre of

@@ -1,5 +1,7 @@
 #include "pbd/neighbour_grid.h"
 
+#include <omp.h>
+
 #include <bit>
 #include <limits>
 #include <stdexcept>
@@ -156,6 +158,46 @@ void NeighbourGrid::buildNeighbourLists(const std::vector<Vec3>& positions, Real
     assert(k == offsets[i + 1]);
     std::sort(indices + offsets[i], indices + offsets[i + 1]);
   }
+}
+
+void NeighbourGrid::buildSlotNeighbourLists(Real radius, NeighbourLists& lists) {
+  assert(radius <= m_cellSize || m_count == 0);
+  const std::size_t n = m_count;
+  const Real r2 = radius * radius;
+  lists.offsets.resize(n + 1);
+  lists.offsets[0] = 0;
+  const int threads = std::max(1, m_settings.threads);
+  if (m_threadLists.size() < std::size_t(threads)) m_threadLists.resize(std::size_t(threads));
+  // Below this a fork-join costs more than the queries.
+  const bool parallel = threads > 1 && n >= 2048;
+  std::uint64_t total = 0;
+#pragma omp parallel num_threads(threads) if (parallel)
+  {
+    const std::size_t t = std::size_t(omp_get_thread_num());
+    const std::size_t teams = std::size_t(omp_get_num_threads());
+    const std::size_t begin = n * t / teams, end = n * (t + 1) / teams;
+    std::vector<Index>& buffer = m_threadLists[t];
+    buffer.clear();
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::size_t first = buffer.size();
+      forEachSlotNeighbour(Index(k), r2, [&buffer](Index j) { buffer.push_back(j); });
+      if (m_hashed) std::sort(buffer.begin() + std::ptrdiff_t(first), buffer.end());
+      lists.offsets[k + 1] = Index(buffer.size() - first);
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      for (std::size_t k = 1; k <= n; ++k) {
+        total += lists.offsets[k];
+        lists.offsets[k] = Index(std::min<std::uint64_t>(total, std::numeric_limits<Index>::max()));
+      }
+      if (total <= std::numeric_limits<Index>::max()) lists.indices.resize(std::size_t(total));
+    }
+    // The implicit barrier of `single` makes offsets and indices visible to every thread.
+    if (total <= std::numeric_limits<Index>::max() && !buffer.empty())
+      std::copy(buffer.begin(), buffer.end(), lists.indices.begin() + std::ptrdiff_t(lists.offsets[begin]));
+  }
+  if (total > std::numeric_limits<Index>::max()) throw std::length_error("NeighbourGrid: too many neighbour pairs");
 }
 
 namespace {

@@ -76,6 +76,14 @@ class NeighbourGrid {
   // identical for any thread count. Buffers of `lists` are reused.
   void buildNeighbourLists(const std::vector<Vec3>& positions, Real radius, NeighbourLists& lists) const;
 
+  // The same lists in cell order, the fast path of the fluid solver: slot k is the particle
+  // sortedIndices()[k] at sortedPositions()[k], and lists name slots, not particle ids. In the
+  // dense layout the 9 runs of a query come in increasing slot order, so every list is sorted
+  // without sorting and neighbours are close in memory. One pass: each thread fills its own
+  // buffer for a contiguous range of slots, then the buffers are concatenated in slot order,
+  // so the result is identical for any thread count. Buffers are reused between builds.
+  void buildSlotNeighbourLists(Real radius, NeighbourLists& lists);
+
   Index particleCount() const { return m_count; }
   Real cellSize() const { return m_cellSize; }
   bool hashed() const { return m_hashed; }
@@ -125,6 +133,40 @@ class NeighbourGrid {
     }
   }
 
+  // Calls f(slot j) for every slot j != k closer than sqrt(r2) to slot k.
+  template <class F>
+  void forEachSlotNeighbour(Index k, Real r2, F&& f) const {
+    const Vec3 x = m_sortedPositions[k];
+    auto scanSlots = [&](Index begin, Index end) {
+      for (Index j = begin; j < end; ++j)
+        if (j != k && (x - m_sortedPositions[j]).squaredNorm() < r2) f(j);
+    };
+    const Index key = m_cellOf[m_sorted[k]];
+    if (!m_hashed) {
+      const std::int64_t cx = std::int64_t(key) % m_dims[0];
+      const std::int64_t cy = (std::int64_t(key) / m_dims[0]) % m_dims[1];
+      const std::int64_t cz = std::int64_t(key) / (m_dims[0] * m_dims[1]);
+      const std::int64_t x0 = std::max<std::int64_t>(cx - 1, 0), x1 = std::min(cx + 1, m_dims[0] - 1);
+      const std::int64_t y0 = std::max<std::int64_t>(cy - 1, 0), y1 = std::min(cy + 1, m_dims[1] - 1);
+      const std::int64_t z0 = std::max<std::int64_t>(cz - 1, 0), z1 = std::min(cz + 1, m_dims[2] - 1);
+      for (std::int64_t z = z0; z <= z1; ++z)
+        for (std::int64_t y = y0; y <= y1; ++y) {
+          const std::int64_t row = (z * m_dims[1] + y) * m_dims[0];
+          scanSlots(m_cellStart[std::size_t(row + x0)], m_cellStart[std::size_t(row + x1 + 1)]);
+        }
+      return;
+    }
+    const Coord c = cellCoord(x);
+    std::array<Index, 27> buckets;
+    int n = 0;
+    for (std::int64_t dz = -1; dz <= 1; ++dz)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dx = -1; dx <= 1; ++dx) buckets[std::size_t(n++)] = bucketOf(c[0] + dx, c[1] + dy, c[2] + dz);
+    std::sort(buckets.begin(), buckets.end());
+    const auto last = std::unique(buckets.begin(), buckets.end());
+    for (auto b = buckets.begin(); b != last; ++b) scanSlots(m_cellStart[*b], m_cellStart[*b + 1]);
+  }
+
   template <class F>
   void query(const Vec3& x, Real radius, Index skip, F& f) const {
     assert(radius <= m_cellSize || m_count == 0);
@@ -170,6 +212,7 @@ class NeighbourGrid {
   std::vector<Index> m_cellOf;          // cell (or bucket) of each particle
   std::vector<Vec3> m_sortedPositions;  // positions in the order of m_sorted
   std::size_t m_reservedFor = 0;        // particle count the cell buffer was reserved for
+  std::vector<std::vector<Index>> m_threadLists;  // per-thread buffers of buildSlotNeighbourLists
 };
 
 // Permutation sorting particles along a Z-order (Morton) curve of their grid cells (edge

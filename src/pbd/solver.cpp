@@ -149,11 +149,13 @@ void projectConstraints(ConstraintSet& constraints, Particles& particles,
 void updateVelocities(Particles& particles, const SolverSettings& settings) {
   const auto n = static_cast<std::ptrdiff_t>(particles.size());
   const Real invDt = Real(1) / settings.dt;
-  const Real keep = std::max(Real(0), Real(1) - settings.damping * settings.dt);
+  const std::array<Real, 2> keep{std::max(Real(0), Real(1) - settings.damping[0] * settings.dt),
+                                 std::max(Real(0), Real(1) - settings.damping[1] * settings.dt)};
 #pragma omp parallel for schedule(static) num_threads(settings.threads) \
     if (static_cast<std::size_t>(n) >= kParallelThreshold)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
-    particles.velocity[i] = (keep * invDt) * (particles.predicted[i] - particles.position[i]);
+    const Real k = keep[static_cast<std::size_t>(particles.kind[i])];
+    particles.velocity[i] = (k * invDt) * (particles.predicted[i] - particles.position[i]);
     particles.position[i] = particles.predicted[i];
   }
 }

@@ -26,7 +26,9 @@ struct SolverSettings {
   Vec3 gravity = Vec3(0, Real(-9.81), 0);
   // Share of gravity each particle kind feels, indexed by ParticleKind (Tissue, Fluid).
   std::array<Real, 2> gravityScale{1, 1};
-  Real damping = 0;            // 1/s: v <- v * max(0, 1 - damping dt) after the update
+  // 1/s, per ParticleKind (Tissue, Fluid): v <- v * max(0, 1 - damping dt) after the update.
+  // Viscous tissue is damped; a liquid's dissipation is its viscosity (fluid.h), not this.
+  std::array<Real, 2> damping{0, 0};
   int threads = 1;             // OpenMP threads for projection and particle loops
 };
 

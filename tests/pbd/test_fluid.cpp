@@ -84,6 +84,9 @@ FluidSettings settingsFor(Real h, Real spacing) {
   // 1/m^2; next to sum |grad C|^2 = 0.37/d^2 = 14.5/m^2 of a full neighbourhood at h = 2d
   // (measured below), so it changes lambda by under 1%.
   s.relaxation = Real(0.1);
+  // The papers' bilateral constraint: these tests check PBF's equations as written. The
+  // one-sided clamp the solver uses is tested on its own below.
+  s.unilateralDensity = false;
   return s;
 }
 
@@ -268,7 +271,7 @@ TEST(Fluid, XsphDampsRelativeVelocityAndConservesMomentum) {
   const NeighbourLists lists = listsFor(x, h);
   const std::vector<Index> all = allOf(x.size());
   std::vector<Vec3> vNew;
-  applyXsphViscosity(x, v, lists, all, kernels, s, vNew);
+  applyViscosity(x, v, lists, all, kernels, s, Real(0.005), vNew);
 
   const Real before = (v[0] - v[1]).norm(), after = (vNew[0] - vNew[1]).norm();
   // Each velocity moves by c W (v_j - v_i), so the relative velocity shrinks by (1 - 2 c W).
@@ -306,7 +309,7 @@ TEST(Fluid, ResultsAreBitwiseIdenticalForOneAndTwoThreads) {
     computeDensities(x, lists, all, kernels, s, o.rho, threads);
     computeLambdas(x, lists, all, kernels, s, o.rho, o.lambda, threads);
     computeDensityCorrections(x, lists, all, kernels, s, o.lambda, o.dp, threads);
-    applyXsphViscosity(x, v, lists, all, kernels, s, o.vNew, threads);
+    applyViscosity(x, v, lists, all, kernels, s, Real(0.005), o.vNew, threads);
     return o;
   };
   const Out a = run(1), b = run(2);
@@ -319,6 +322,103 @@ TEST(Fluid, ResultsAreBitwiseIdenticalForOneAndTwoThreads) {
   double sumDp = 0;
   for (const Vec3& q : a.dp) sumDp += double(q.norm());
   EXPECT_GT(sumDp, 0.0);
+}
+
+TEST(Fluid, UnilateralDensityOnlyPushesApart) {
+  // A lattice whose outer particles are under-dense (C < 0): bilateral lambdas are positive
+  // there (pull together), unilateral ones are clamped to 0; compressed interiors agree.
+  const Real h = Real(0.32);
+  const Lattice lat = cubicLattice(7, Real(0.9) * kSpacing);
+  FluidSettings bilateral = settingsFor(h, kSpacing);
+  FluidSettings unilateral = bilateral;
+  unilateral.unilateralDensity = true;
+  const SphKernels kernels = makeSphKernels(h);
+  const NeighbourLists lists = listsFor(lat.x, h);
+  const std::vector<Index> all = allOf(lat.x.size());
+  std::vector<Real> rho, lambdaB, lambdaU;
+  computeLambdas(lat.x, lists, all, kernels, bilateral, rho, lambdaB);
+  computeLambdas(lat.x, lists, all, kernels, unilateral, rho, lambdaU);
+  int pulled = 0, pushed = 0;
+  for (Index p = 0; p < lat.x.size(); ++p) {
+    EXPECT_LE(lambdaU[p], Real(0)) << "particle " << p;
+    if (lambdaB[p] > 0) {
+      ++pulled;
+      EXPECT_EQ(lambdaU[p], Real(0));
+    } else {
+      ++pushed;
+      EXPECT_EQ(lambdaU[p], lambdaB[p]);
+    }
+  }
+  EXPECT_GT(pulled, 0);
+  EXPECT_GT(pushed, 0);
+}
+
+TEST(Fluid, ParticleCollisionSeparatesOverlappingPairs) {
+  // Thesis eq. 4.6: two particles 0.5 r apart with collision radius r end 2r apart after one
+  // correction (each moves half the overlap), lambdas zero so only the collision acts.
+  FluidSettings s = settingsFor(Real(0.32), kSpacing);
+  s.collisionRadius = Real(0.08);
+  const SphKernels kernels = makeSphKernels(s.supportRadius);
+  const std::vector<Vec3> x{Vec3(0, 0, 0), Vec3(Real(0.04), 0, 0)};
+  const NeighbourLists lists = listsFor(x, s.supportRadius);
+  const std::vector<Real> lambda(2, Real(0));
+  std::vector<Vec3> dp;
+  computeDensityCorrections(x, lists, allOf(2), kernels, s, lambda, dp);
+  EXPECT_NEAR(double(((x[1] + dp[1]) - (x[0] + dp[0])).norm()), 0.16, 1e-6);
+  EXPECT_NEAR(double((dp[0] + dp[1]).norm()), 0.0, 1e-7);  // momentum
+}
+
+TEST(Fluid, LaplacianViscosityDampsShearAndConservesMomentum) {
+  // A sheared lattice (v_x = k y): one viscous step at nu > 0 reduces the velocity spread of
+  // interior particles towards their neighbours and keeps the total momentum.
+  const Real h = Real(0.32);
+  const Lattice lat = cubicLattice(7, kSpacing);
+  FluidSettings s = settingsFor(h, kSpacing);
+  s.xsphViscosity = 0;
+  s.kinematicViscosity = Real(0.5);  // m^2/s; dt = 5 ms is below 0.125 h^2 / nu = 0.026 s
+  const SphKernels kernels = makeSphKernels(h);
+  const NeighbourLists lists = listsFor(lat.x, h);
+  std::vector<Vec3> v(lat.x.size());
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = Vec3(lat.x[i].y() * lat.x[i].y(), 0, 0);  // curved profile
+  std::vector<Vec3> vNew;
+  applyViscosity(lat.x, v, lists, allOf(v.size()), kernels, s, Real(0.005), vNew);
+  Vec3 before = Vec3::Zero(), after = Vec3::Zero();
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    before += v[i];
+    after += vNew[i];
+  }
+  EXPECT_LT((after - before).norm(), Real(1e-4) * before.norm());
+  // lap(y^2) = 2 > 0: interior particles accelerate along +x by about dt nu 2.
+  const Index centre = lat.at(lat.n / 2, lat.n / 2, lat.n / 2);
+  const double dv = double(vNew[centre].x() - v[centre].x());
+  EXPECT_GT(dv, 0.0);
+  EXPECT_NEAR(dv, 0.005 * 0.5 * 2.0, 0.5 * 0.005 * 0.5 * 2.0);  // SPH Laplacian within 50%
+}
+
+TEST(Fluid, VorticityConfinementAddsRotationAlongTheCurl) {
+  // A rigid rotation about z with a vorticity magnitude growing with radius: confinement adds
+  // a velocity perpendicular to both grad|omega| and omega, and nothing when eps = 0.
+  const Real h = Real(0.32);
+  const Lattice lat = cubicLattice(9, kSpacing);
+  FluidSettings s = settingsFor(h, kSpacing);
+  const SphKernels kernels = makeSphKernels(h);
+  const NeighbourLists lists = listsFor(lat.x, h);
+  const Vec3 c = lat.x[lat.at(lat.n / 2, lat.n / 2, lat.n / 2)];
+  std::vector<Vec3> v(lat.x.size());
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Vec3 r = lat.x[i] - c;
+    v[i] = (Real(1) + r.x()) * Vec3(-r.y(), r.x(), 0);  // swirl stronger towards +x
+  }
+  std::vector<Vec3> omega, vOff, vOn;
+  s.vorticityConfinement = 0;
+  applyVorticityConfinement(lat.x, v, lists, allOf(v.size()), kernels, s, Real(0.005), omega, vOff);
+  for (std::size_t i = 0; i < v.size(); ++i) EXPECT_EQ(vOff[i], v[i]);
+  const Index centre = lat.at(lat.n / 2, lat.n / 2, lat.n / 2);
+  EXPECT_GT(double(omega[centre].z()), 0.0);  // counter-clockwise about +z
+  s.vorticityConfinement = Real(1);
+  applyVorticityConfinement(lat.x, v, lists, allOf(v.size()), kernels, s, Real(0.005), omega, vOn);
+  // N points to +x (stronger swirl), omega to +z: N x omega points to -y.
+  EXPECT_LT(double(vOn[centre].y() - v[centre].y()), 0.0);
 }
 
 TEST(Fluid, SubsetWritesOnlyItsOwnEntries) {

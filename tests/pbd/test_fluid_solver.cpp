@@ -69,7 +69,7 @@ TEST(FluidSolver, FluidBlockFillsTheBoxWithOneParticlePerCell) {
 }
 
 // Support radius h = 2d = 0.32 m, the thesis ratio (26 neighbours at rest). h = 3d and 4d were
-// tried and settle worse here: with the unilateral density constraint (fluid_solver.h) the
+// tried and settle worse here: with the unilateral density constraint (fluid.h) the
 // larger kernels leave the column 2.5-3% under-dense and jitter more (max speed 2-6 m/s).
 // XSPH c = 0.003 m^3: the default c = 0.01 m^3 of FluidSettings is unstable at the thesis
 // particle mass, since c sum_j W_ij ~ c rho0/m = 0.01 / 0.0041 = 2.4 > 1 makes XSPH amplify

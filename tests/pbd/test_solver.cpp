@@ -118,7 +118,7 @@ TEST(Solver, SquashedSoftBodyRecoversItsRestShape) {
   for (auto& x : w.particles.position) x.y() *= Real(0.7);  // squash toward the pinned floor
   SolverSettings s;
   s.gravity.setZero();
-  s.damping = 5;
+  s.damping = {5, 5};
   for (int i = 0; i < 400; ++i) step(w.constraints, w.particles, s);
   Real worst = 0;
   for (std::size_t i = 0; i < rest.size(); ++i) worst = std::max(worst, (w.particles.position[i] - rest[i]).norm());

@@ -1,0 +1,139 @@
+#include "cardiac/blood.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace hs::cardiac {
+namespace {
+
+using pbd::Real;
+using pbd::Vec3;
+
+std::string str(double value) {
+  std::ostringstream s;
+  s.precision(4);
+  s << value;
+  return s.str();
+}
+
+std::string vec(const Vec3& v) { return "[" + str(v.x()) + ", " + str(v.y()) + ", " + str(v.z()) + "]"; }
+
+double physicalMemoryBytes() {
+  const long pages = sysconf(_SC_PHYS_PAGES);
+  const long size = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && size > 0 ? double(pages) * double(size) : 0.0;
+}
+
+}  // namespace
+
+pbd::FluidStepSettings bloodSolverSettings(const Scenario& scenario, int threads) {
+  const BloodSettings& b = scenario.blood;
+  pbd::FluidStepSettings s;
+  s.base.dt = scenario.simulation.dt;
+  s.base.gravity = scenario.simulation.gravity;
+  s.base.threads = threads;
+  s.iterations = b.iterations;
+  pbd::FluidSettings& f = s.fluid;
+  f.restDensity = b.restDensity;
+  f.particleMass = pbd::particleMassFor(b.restDensity, b.spacing);
+  f.supportRadius = b.supportRadius;
+  f.relaxation = b.relaxation * pbd::latticeGradientSum(pbd::makeSphKernels(b.supportRadius), b.spacing,
+                                                         f.particleMass, b.restDensity);
+  f.tensileCorrection = b.tensileCorrection;
+  f.tensileK = b.tensileK;
+  f.tensileN = b.tensileN;
+  f.tensileDeltaQRatio = b.tensileDeltaQ;
+  f.unilateralDensity = true;
+  f.collisionRadius = b.particleCollision ? b.radius : Real(0);
+  f.xsphViscosity = b.xsph * f.particleMass / b.restDensity;  // c = gamma m / rho0
+  f.kinematicViscosity = b.viscosity / b.restDensity;         // nu = mu / rho0
+  f.vorticityConfinement = b.vorticity;
+  s.particleRadius = b.radius;
+  if (scenario.container.enabled && !scenario.container.mesh)
+    s.walls = pbd::boxWalls(scenario.container.min, scenario.container.max);
+
+  // Explicit viscosity is stable for dt <= 0.125 h^2 / nu (Monaghan 2005, section 6.3).
+  const double nu = double(f.kinematicViscosity);
+  const double limit = 0.125 * double(b.supportRadius) * double(b.supportRadius) / std::max(nu, 1e-300);
+  if (nu > 0 && double(s.base.dt) > limit)
+    throw std::invalid_argument("blood.viscosity: " + str(b.viscosity) + " Pa s is too viscous for simulation.dt = " +
+                                str(s.base.dt) + " s at support radius " + str(b.supportRadius) +
+                                " m; expected dt <= 0.125 h^2 rho0 / mu = " + str(limit) + " s");
+  if (b.particleCollision && 2 * b.radius > b.spacing * Real(1.0001))
+    throw std::invalid_argument("blood.radius: with particle_collision, two radii (" + str(2 * b.radius) +
+                                " m) must not exceed blood.spacing (" + str(b.spacing) +
+                                " m), or the particles overlap at rest");
+  return s;
+}
+
+std::size_t bloodBytesPerParticle(std::size_t neighbours) {
+  // Particle state ~41 B, solver slot arrays ~130 B, grid ~40 B, neighbour lists and the
+  // per-thread buffers 2 x 4 B per neighbour, the measurement's grid and lists again.
+  return 256 + 12 * neighbours;
+}
+
+std::vector<Vec3> bloodStartPositions(const Scenario& scenario) {
+  const BloodSettings& b = scenario.blood;
+  // Count the sites before making any: a tiny spacing must fail here, not in the allocator.
+  double sites = 1;
+  for (int a = 0; a < 3; ++a) sites *= std::floor(double(b.blockMax[a] - b.blockMin[a]) / double(b.spacing) + 1e-4);
+  const double wanted = b.particles > 0 ? double(b.particles) : sites;
+  const double neighbours = double(pbd::latticeNeighbourCount(b.supportRadius, b.spacing));
+  const double bytes = wanted * double(bloodBytesPerParticle(std::size_t(std::min(neighbours, 1e6))));
+  const double memory = physicalMemoryBytes();
+  if (memory > 0 && bytes > 0.8 * memory)
+    throw std::invalid_argument("blood: " + str(wanted) + " particles (spacing " + str(b.spacing) + " m, " +
+                                str(neighbours) + " neighbours each) need about " + str(bytes / 1e9) +
+                                " GB, more than 80% of this machine's " + str(memory / 1e9) +
+                                " GB; lower blood.particles or raise blood.spacing");
+  if (b.particles > 0 && sites < wanted)
+    throw std::invalid_argument("blood.particles: the start block " + vec(b.blockMin) + " - " + vec(b.blockMax) +
+                                " m holds " + str(sites) + " particles at spacing " + str(b.spacing) +
+                                " m, expected at least " + str(wanted) + "; enlarge blood.block_max");
+  if (scenario.container.enabled) {
+    const auto& c = scenario.container;
+    for (int a = 0; a < 3; ++a)
+      if (b.blockMin[a] < c.min[a] || b.blockMax[a] > c.max[a])
+        throw std::invalid_argument("blood.block_min: the start block " + vec(b.blockMin) + " - " + vec(b.blockMax) +
+                                    " m must lie inside the container " + vec(c.min) + " - " + vec(c.max) + " m");
+  }
+  std::vector<Vec3> x = pbd::fluidBlock(b.blockMin, b.blockMax, b.spacing);
+  if (b.particles > 0) {
+    // Lowest layers first, so a partial fill is a pool at the bottom of the block.
+    std::stable_sort(x.begin(), x.end(), [](const Vec3& p, const Vec3& q) { return p.y() < q.y(); });
+    x.resize(std::size_t(b.particles));
+  }
+  return x;
+}
+
+BloodStats measureBlood(const Scenario& scenario, const pbd::Particles& particles, int threads) {
+  const BloodSettings& b = scenario.blood;
+  BloodStats stats;
+  pbd::FluidSettings fluid;
+  fluid.restDensity = b.restDensity;
+  fluid.particleMass = pbd::particleMassFor(b.restDensity, b.spacing);
+  fluid.supportRadius = b.supportRadius;
+  const pbd::FluidStats f = pbd::measureFluid(particles, fluid, b.spacing, threads);
+  stats.particles = f.fluidCount;
+  stats.densityErrorMean = double(f.densityErrorMean);
+  stats.densityErrorMax = double(f.densityErrorMax);
+  stats.fullNeighbourhood = f.fullCount;
+  stats.maxSpeed = double(f.maxSpeed);
+  const auto& c = scenario.container;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    if (particles.kind[i] != pbd::ParticleKind::Fluid) continue;
+    const Vec3& x = particles.position[i];
+    bool out = !x.allFinite() || !particles.velocity[i].allFinite();
+    if (!out && c.enabled)
+      for (int a = 0; a < 3; ++a) out = out || x[a] < c.min[a] - b.radius || x[a] > c.max[a] + b.radius;
+    if (out) ++stats.lost;
+  }
+  return stats;
+}
+
+}  // namespace hs::cardiac

@@ -1,0 +1,46 @@
+#pragma once
+// Blood for a scenario: where its particles start, the PBF solver settings that follow from
+// the scenario's clinical/physical parameters, and the measurements the runner reports.
+// The fluid itself (density constraint, viscosity, collisions) is the engine's, pbd/fluid*.h.
+#include <cstddef>
+#include <vector>
+
+#include "cardiac/scenario.h"
+#include "pbd/fluid_solver.h"
+#include "pbd/particles.h"
+
+namespace hs::cardiac {
+
+// Solver settings for the scenario's blood (thesis 4.2 with the constants of Table 5.2):
+//   m = rho0 d^3 (one particle per lattice cell at rest, docs/thesis-deviations.md),
+//   XSPH c = gamma m / rho0 (thesis eq. 4.11), nu = mu / rho0,
+//   eps = relaxation * sum |grad C|^2 of a particle at rest (pbd::latticeGradientSum),
+//   walls = the container's six planes when it has plane walls.
+// Throws std::invalid_argument, naming the key, for combinations the solver cannot run
+// (viscosity too large for dt, particles that would overlap at rest).
+pbd::FluidStepSettings bloodSolverSettings(const Scenario& scenario, int threads);
+
+// Start positions: the lattice sites of [blood.block_min, blood.block_max] at blood.spacing,
+// all of them (blood.particles = 0) or the first blood.particles sites, lowest y first.
+// Throws std::invalid_argument when the block holds too few sites, when the start block is
+// not inside the container, or when the particles would not fit in this machine's memory.
+std::vector<pbd::Vec3> bloodStartPositions(const Scenario& scenario);
+
+// Rough bytes per blood particle of a run (state, solver buffers, neighbour lists of about
+// `neighbours` entries), for the memory check above.
+std::size_t bloodBytesPerParticle(std::size_t neighbours);
+
+struct BloodStats {
+  std::size_t particles = 0;
+  // Particles outside the domain (the container, grown by one radius) or non-finite.
+  std::size_t lost = 0;
+  // |rho/rho0 - 1| over particles with a full neighbourhood (pbd::measureFluid).
+  double densityErrorMean = 0;
+  double densityErrorMax = 0;
+  std::size_t fullNeighbourhood = 0;
+  double maxSpeed = 0;  // m/s over all blood particles
+};
+
+BloodStats measureBlood(const Scenario& scenario, const pbd::Particles& particles, int threads);
+
+}  // namespace hs::cardiac

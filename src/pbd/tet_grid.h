@@ -1,0 +1,114 @@
+#pragma once
+// A uniform grid over tetrahedra for point queries: "which tets may contain this point?"
+// (the broad phase of particle–tetrahedron penetration, thesis section 4.4.1).
+//
+// Why these choices:
+//  * Each tet is entered in every cell its axis-aligned bounding box overlaps, so a query reads
+//    exactly one cell and meets each tet at most once: no duplicate removal, no 27-cell scan.
+//  * Cell edge = cellSizeFactor x the mean bounding-box extent (largest side) of the tets. A
+//    tet no larger than a cell overlaps at most 2 x 2 x 2 cells, so a mesh of similar tets costs
+//    about 8 entries per tet and a query filters a handful of boxes.
+//  * The tets move every step, so the grid is rebuilt every step: counting sort (histogram,
+//    prefix sum, scatter) over the cells, O(tets + cells + entries), into buffers reused
+//    between builds. With the same tet count no build allocates once the entry buffer has
+//    reached its working size (it grows with 25% headroom).
+//  * The number of cells is capped at maxCellsPerTet x tets + 64: if a few tets fly apart and
+//    the bounds explode, the cells grow instead of the memory. A query is still exact, it just
+//    filters more boxes.
+//  * Cell coordinates are computed in double from Real coordinates by the same monotone
+//    expression for boxes and points, so a point inside a box always falls in one of the box's
+//    cells: candidates are exactly the tets whose (padded) box contains the point.
+//  * Queries are const and touch no mutable state: safe from any number of threads at once
+//    (OpenMP loops over particles). Within a cell tets are listed in increasing index order.
+#include <cassert>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "pbd/tet_mesh.h"
+#include "pbd/types.h"
+
+namespace hs::pbd {
+
+struct TetGridSettings {
+  Real cellSizeFactor = 1;  // cell edge = factor x mean bounding-box extent of the tets
+  Real padding = 0;         // every bounding box grows by this distance on all sides (>= 0)
+  Real maxCellsPerTet = 8;  // cap on the dense cell count (see above)
+};
+
+class TetGrid {
+ public:
+  explicit TetGrid(TetGridSettings settings = {}) : m_settings(settings) {}
+
+  const TetGridSettings& settings() const { return m_settings; }
+  void setSettings(const TetGridSettings& s) { m_settings = s; }
+
+  // Bounding boxes of tets over `vertices`, sorted into cells. Tets with a non-finite vertex
+  // are left out (never candidates). Queries see the geometry as of this call.
+  void build(const std::vector<Vec3>& vertices, const std::vector<Tet>& tets);
+
+  // Calls f(tet) once for every tet whose padded bounding box contains p (boundary included),
+  // in increasing tet index. Points outside the grid, and non-finite ones, have no candidates.
+  template <class F>
+  void forEachCandidate(const Vec3& p, F&& f) const {
+    std::size_t cell;
+    if (!cellOf(p, cell)) return;
+    for (Index k = m_cellStart[cell], end = m_cellStart[cell + 1]; k < end; ++k) {
+      const Index t = m_entries[k];
+      const Vec3& lo = m_lo[t];
+      const Vec3& hi = m_hi[t];
+      if (lo[0] <= p[0] && p[0] <= hi[0] && lo[1] <= p[1] && p[1] <= hi[1] && lo[2] <= p[2] && p[2] <= hi[2])
+        f(t);
+    }
+  }
+
+  // The candidates of p in `out` (cleared first), in increasing tet index.
+  void candidates(const Vec3& p, std::vector<Index>& out) const;
+
+  // The tets that contain p (isPointInTet with `tolerance`, in barycentric units), in increasing
+  // index. `vertices` and `tets` must be those of the last build(). For tolerance > 0 set
+  // settings().padding so that the grown tets stay inside the padded boxes.
+  void tetsContaining(const Vec3& p, const std::vector<Vec3>& vertices, const std::vector<Tet>& tets,
+                      Real tolerance, std::vector<Index>& out) const;
+
+  Index tetCount() const { return Index(m_lo.size()); }
+  Real cellSize() const { return m_cellSize; }
+  std::size_t cellCount() const { return m_cellStart.empty() ? 0 : m_cellStart.size() - 1; }
+  std::size_t entryCount() const { return m_entryCount; }
+
+  // Runtime buffers, exposed for tests (allocation reuse) and diagnostics.
+  const std::vector<Index>& cellStarts() const { return m_cellStart; }
+  const std::vector<Index>& entries() const { return m_entries; }
+
+ private:
+  // Cell coordinate along axis a of coordinate v: the one expression used for boxes and points.
+  double axisCoord(Real v, int a) const { return (double(v) - m_origin[std::size_t(a)]) * m_invCell; }
+
+  bool cellOf(const Vec3& p, std::size_t& cell) const {
+    if (m_entryCount == 0) return false;
+    std::size_t c[3];
+    for (int a = 0; a < 3; ++a) {
+      const double t = axisCoord(p[a], a);
+      // Outside [0, dims) no box can contain p (every box lies inside the bounds); also NaN.
+      if (!(t >= 0 && t < double(m_dims[std::size_t(a)]))) return false;
+      c[a] = std::size_t(t);
+    }
+    cell = (c[2] * m_dims[1] + c[1]) * m_dims[0] + c[0];
+    return true;
+  }
+
+  TetGridSettings m_settings;
+
+  // Runtime state of the last build.
+  Real m_cellSize = 0;
+  double m_invCell = 1;
+  std::array<double, 3> m_origin{0, 0, 0};
+  std::array<std::size_t, 3> m_dims{0, 0, 0};
+  std::vector<Vec3> m_lo, m_hi;                 // padded bounding box of each tet (empty box if non-finite)
+  std::vector<Index> m_cellStart;               // cells + 1: [begin, end) into m_entries
+  std::vector<Index> m_entries;                 // tet ids by cell; ascending within a cell
+  std::size_t m_entryCount = 0;                 // used part of m_entries
+  std::size_t m_reservedFor = ~std::size_t(0);  // tet count m_cellStart was reserved for
+};
+
+}  // namespace hs::pbd
