@@ -1,10 +1,11 @@
-// heartsim: the command-line entry point. Subcommands: run, bench.
+// heartsim: the command-line entry point. Subcommands: run, bench, validate.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
 #include "bench_command.h"
 #include "exit_codes.h"
 #include "run_command.h"
+#include "validate_command.h"
 #include "version.h"
 
 int main(int argc, char** argv) {
@@ -33,6 +34,21 @@ int main(int argc, char** argv) {
   benchApp->add_option("--seconds", bench.seconds, "Measuring time per case (s)")->check(CLI::Range(0.1, 600.0));
   benchApp->add_flag("--json", bench.json, "Print one JSON object on stdout");
 
+  ValidateOptions validate;
+  CLI::App* validateApp = app.add_subcommand("validate", "Compare a simulation with experimental data");
+  validateApp->require_subcommand(1);
+  CLI::App* damBreakApp =
+      validateApp->add_subcommand("dam-break", "Surge front of a collapsing column vs Martin & Moyce (1952), n^2 = 2");
+  damBreakApp->add_option("--scenario", validate.scenario, "Built-in scenario name or path to a .toml file")
+      ->capture_default_str();
+  damBreakApp->add_option("--set", validate.overrides, "Override a scenario key: --set blood.iterations=6 (repeatable)")
+      ->take_all()
+      ->expected(1);
+  damBreakApp->add_option("--out", validate.outDir, "Output directory")->capture_default_str();
+  damBreakApp->add_option("--threads", validate.threads, "Worker threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  damBreakApp->add_flag("--json", validate.json, "Print one JSON report object on stdout");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -51,6 +67,7 @@ int main(int argc, char** argv) {
       return runCommand(run);
     }
     if (benchApp->parsed()) return benchCommand(bench);
+    if (damBreakApp->parsed()) return validateDamBreakCommand(validate);
   } catch (const std::exception& e) {
     std::cerr << "heartsim: error: " << e.what() << '\n';
     return kExitFailure;

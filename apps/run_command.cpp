@@ -294,6 +294,7 @@ int runCommand(const RunOptions& options) {
         {"density_error_mean", lastSecondMean},
         {"density_error_max", stats.lastSecondSteps > 0 ? stats.densityErrorMax : blood.densityErrorMax},
         {"full_neighbourhood", blood.fullNeighbourhood},
+        {"mean_neighbours", blood.meanNeighbours},
         {"max_speed_m_s", blood.maxSpeed},
         {"max_speed_run_m_s", std::max(stats.bloodSpeedMax, blood.maxSpeed)},
         {"iterations", scenario.blood.iterations},

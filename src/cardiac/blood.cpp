@@ -124,6 +124,7 @@ BloodStats measureBlood(const Scenario& scenario, const pbd::Particles& particle
   stats.densityErrorMax = double(f.densityErrorMax);
   stats.fullNeighbourhood = f.fullCount;
   stats.maxSpeed = double(f.maxSpeed);
+  stats.meanNeighbours = double(f.meanNeighbours);
   const auto& c = scenario.container;
   for (std::size_t i = 0; i < particles.size(); ++i) {
     if (particles.kind[i] != pbd::ParticleKind::Fluid) continue;

@@ -39,6 +39,7 @@ struct BloodStats {
   double densityErrorMax = 0;
   std::size_t fullNeighbourhood = 0;
   double maxSpeed = 0;  // m/s over all blood particles
+  double meanNeighbours = 0;  // neighbours within the support radius per particle
 };
 
 BloodStats measureBlood(const Scenario& scenario, const pbd::Particles& particles, int threads);

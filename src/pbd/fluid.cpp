@@ -40,6 +40,21 @@ Real poly6Sum(const std::vector<Vec3>& positions, const NeighbourLists& lists, c
   return sum;
 }
 
+// s with grad W_spiky(r_ij) = s r_ij, without branches (the kernels of sph_kernels.h branch
+// on r >= h and r = 0): s = -45/(pi h^4) (1 - r/h)^2 / r, with q = 1 - r/h clamped to 0
+// beyond h, and r clamped below at 1e-6 h so that s stays finite (r_ij = 0 then gives a zero
+// gradient, as spikyGradient does; pairs closer than 1e-6 h get a slightly smaller one).
+HS_KERNEL Real spikyGradientScale(const SphKernels& k, Real r) {
+  const Real q = std::max(Real(0), Real(1) - r * k.invH);
+  return k.spikyGradCoeff * q * q / std::max(r, Real(1e-6) * k.h);
+}
+
+// W_poly6 from r^2, clamped to 0 beyond h without a branch.
+HS_KERNEL Real poly6Clamped(const SphKernels& k, Real r2) {
+  const Real t = std::max(Real(0), Real(1) - r2 * k.invH2);
+  return k.poly6Coeff * (t * t * t);
+}
+
 }  // namespace
 
 Real latticeGradientSum(const SphKernels& kernels, Real spacing, Real mass, Real restDensity) {
@@ -91,8 +106,10 @@ void computeDensityConstraints(const std::vector<Real>& densities, std::span<con
 void computeLambdas(const std::vector<Vec3>& positions, const NeighbourLists& lists,
                     std::span<const Index> subset, const SphKernels& kernels,
                     const FluidSettings& settings, std::vector<Real>& densities,
-                    std::vector<Real>& lambdas, int threads) {
+                    std::vector<Real>& lambdas, int threads, std::vector<Real>* pairGradients) {
   checkInputs(positions, lists, kernels, settings);
+  if (pairGradients) pairGradients->resize(lists.indices.size());
+  Real* const pairOut = pairGradients ? pairGradients->data() : nullptr;
   fitOutput(densities, positions.size());
   fitOutput(lambdas, positions.size());
   const Real invRho0 = Real(1) / settings.restDensity;
@@ -114,8 +131,10 @@ void computeLambdas(const std::vector<Vec3>& positions, const NeighbourLists& li
       const Index j = lists.indices[k];
       const Vec3 r = xi - positions[j];
       const Real r2 = r.squaredNorm();
-      kernelSum += poly6(kernels, r2);
-      const Vec3 g = gradScale * spikyGradient(kernels, r, std::sqrt(r2));
+      kernelSum += poly6Clamped(kernels, r2);
+      const Real gs = spikyGradientScale(kernels, std::sqrt(r2));
+      if (pairOut) pairOut[k] = gs;
+      const Vec3 g = (gradScale * gs) * r;
       gradI += g;
       sumSqJ += g.squaredNorm();
     }
@@ -131,8 +150,12 @@ void computeLambdas(const std::vector<Vec3>& positions, const NeighbourLists& li
 void computeDensityCorrections(const std::vector<Vec3>& positions, const NeighbourLists& lists,
                                std::span<const Index> subset, const SphKernels& kernels,
                                const FluidSettings& settings, const std::vector<Real>& lambdas,
-                               std::vector<Vec3>& corrections, int threads) {
+                               std::vector<Vec3>& corrections, int threads,
+                               const std::vector<Real>* pairGradients) {
   checkInputs(positions, lists, kernels, settings);
+  assert(!pairGradients || pairGradients->size() == lists.indices.size());
+  const Real* const pairIn = pairGradients ? pairGradients->data() : nullptr;
+  const bool collide = settings.collisionRadius > Real(0);
   assert(lambdas.size() == positions.size());
   fitOutput(corrections, positions.size());
   const Real scale = settings.particleMass / settings.restDensity;  // m/rho0, see fluid.h
@@ -155,12 +178,15 @@ void computeDensityCorrections(const std::vector<Vec3>& positions, const Neighbo
       const Index j = lists.indices[k];
       const Vec3 r = xi - positions[j];
       const Real r2 = r.squaredNorm();
-      const Real d = std::sqrt(r2);
       Real weight = li + lambdas[j];
       if (tensile) weight += tensileCorrection(kernels, settings, invWq, r2);
-      sum += weight * spikyGradient(kernels, r, d);
+      const Real gs = pairIn ? pairIn[k] : spikyGradientScale(kernels, std::sqrt(r2));
+      sum += (weight * gs) * r;
       // Thesis eq. 4.6: C = |x_ij| - 2r >= 0; equal masses move half the overlap each.
-      if (r2 < contact2 && d > Real(0)) push += (Real(0.5) * (contact - d) / d) * r;
+      if (collide && r2 < contact2 && r2 > Real(0)) {
+        const Real d = std::sqrt(r2);
+        push += (Real(0.5) * (contact - d) / d) * r;
+      }
     }
     corrections[i] = scale * sum + push;
   }

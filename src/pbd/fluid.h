@@ -94,11 +94,15 @@ void computeDensities(const std::vector<Vec3>& positions, const NeighbourLists& 
 // thesis eq. 4.7), with the gradient of PBF eq. 8 (thesis eq. 4.9), spiky kernel:
 //   grad_{p_i} C_i = (m/rho0) sum_j grad W(p_i - p_j),  grad_{p_j} C_i = -(m/rho0) grad W(p_i - p_j).
 // The densities rho_i (as computeDensities) come out of the same neighbour loop. With
-// settings.unilateralDensity, lambda_i = min(lambda_i, 0).
+// settings.unilateralDensity, lambda_i = min(lambda_i, 0). With pairGradients, the scalar
+// s_ij of grad W(p_i - p_j) = s_ij (p_i - p_j) is stored per list entry, for
+// computeDensityCorrections at the same positions (it then skips the square root and the
+// division per pair, half of its cost).
 void computeLambdas(const std::vector<Vec3>& positions, const NeighbourLists& lists,
                     std::span<const Index> subset, const SphKernels& kernels,
                     const FluidSettings& settings, std::vector<Real>& densities,
-                    std::vector<Real>& lambdas, int threads = 1);
+                    std::vector<Real>& lambdas, int threads = 1,
+                    std::vector<Real>* pairGradients = nullptr);
 
 // C_i = rho_i/rho0 - 1 (PBF eq. 1) for the particles of subset (diagnostics and tests).
 void computeDensityConstraints(const std::vector<Real>& densities, std::span<const Index> subset,
@@ -112,7 +116,8 @@ void computeDensityConstraints(const std::vector<Real>& densities, std::span<con
 void computeDensityCorrections(const std::vector<Vec3>& positions, const NeighbourLists& lists,
                                std::span<const Index> subset, const SphKernels& kernels,
                                const FluidSettings& settings, const std::vector<Real>& lambdas,
-                               std::vector<Vec3>& corrections, int threads = 1);
+                               std::vector<Vec3>& corrections, int threads = 1,
+                               const std::vector<Real>* pairGradients = nullptr);
 
 // Viscosity in the velocity post-process (thesis Algorithm 1 line 15), one neighbour loop:
 //   v_i^new = v_i + c sum_j (v_j - v_i) W_poly6(|x_ij|, h)                         (XSPH)

@@ -85,8 +85,8 @@ void FluidSolver::projectDensity(Particles& particles) {
   for (int iteration = 0; iteration < m_settings.iterations; ++iteration) {
     // Lines 9-11: rho_i (PBF eq. 2) and lambda_i (eq. 11); lines 12-15: dp_i (eq. 12) and the
     // particle collisions (thesis eq. 4.6).
-    computeLambdas(m_p, m_lists, all, m_kernels, fluid, m_density, m_lambda, threads);
-    computeDensityCorrections(m_p, m_lists, all, m_kernels, fluid, m_lambda, m_dp, threads);
+    computeLambdas(m_p, m_lists, all, m_kernels, fluid, m_density, m_lambda, threads, &m_pairGradient);
+    computeDensityCorrections(m_p, m_lists, all, m_kernels, fluid, m_lambda, m_dp, threads, &m_pairGradient);
     // Lines 16-18: p_i <- p_i + dp_i (Jacobi: all dp from the same p), then collision
     // response against the walls, C = n.p - (d + r) >= 0 (thesis eq. 4.5).
 #pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
@@ -217,6 +217,7 @@ FluidStats measureFluid(const Particles& particles, const FluidSettings& fluid, 
     sumSigned += double(c);
     stats.densityErrorMax = std::max(stats.densityErrorMax, std::abs(c));
   }
+  stats.meanNeighbours = Real(double(lists.indices.size()) / double(x.size()));
   if (stats.fullCount > 0) {
     stats.densityErrorMean = Real(sumAbs / double(stats.fullCount));
     stats.densitySignedMean = Real(sumSigned / double(stats.fullCount));

@@ -89,6 +89,7 @@ class FluidSolver {
   NeighbourLists m_lists;          // over slots
   std::vector<Real> m_density;
   std::vector<Real> m_lambda;
+  std::vector<Real> m_pairGradient;  // spiky gradient scale per list entry, reused in a pass
   std::vector<Vec3> m_dp;
   std::vector<Vec3> m_v;           // slot velocities (viscosity input)
   std::vector<Vec3> m_vNew;        // viscosity output
@@ -110,6 +111,7 @@ struct FluidStats {
   Real densityErrorMax = 0;          // max  |rho/rho0 - 1| over them
   Real densitySignedMean = 0;        // mean (rho/rho0 - 1) over them (compression > 0)
   Real maxSpeed = 0;                 // max |v| over all fluid particles
+  Real meanNeighbours = 0;           // neighbours within h per fluid particle
 };
 
 // Neighbour count (|r| < h, self excluded) of an interior particle of a cubic lattice of

@@ -177,12 +177,22 @@ void NeighbourGrid::buildSlotNeighbourLists(Real radius, NeighbourLists& lists) 
     const std::size_t teams = std::size_t(omp_get_num_threads());
     const std::size_t begin = n * t / teams, end = n * (t + 1) / teams;
     std::vector<Index>& buffer = m_threadLists[t];
-    buffer.clear();
+    std::size_t used = 0;  // entries of buffer in use; its size is only a capacity
     for (std::size_t k = begin; k < end; ++k) {
-      const std::size_t first = buffer.size();
-      forEachSlotNeighbour(Index(k), r2, [&buffer](Index j) { buffer.push_back(j); });
-      if (m_hashed) std::sort(buffer.begin() + std::ptrdiff_t(first), buffer.end());
-      lists.offsets[k + 1] = Index(buffer.size() - first);
+      const std::size_t first = used;
+      const Vec3 x = m_sortedPositions[k];
+      forEachCandidateRun(Index(k), [&](Index runBegin, Index runEnd) {
+        if (buffer.size() < used + (runEnd - runBegin)) buffer.resize(std::max(2 * buffer.size(), used + 4096));
+        Index* out = buffer.data();
+        // Branch-free append: write every candidate, advance only past the accepted ones
+        // (a neighbour test is a coin toss for the branch predictor).
+        for (Index j = runBegin; j < runEnd; ++j) {
+          out[used] = j;
+          used += std::size_t(((x - m_sortedPositions[j]).squaredNorm() < r2) & (j != Index(k)));
+        }
+      });
+      if (m_hashed) std::sort(buffer.begin() + std::ptrdiff_t(first), buffer.begin() + std::ptrdiff_t(used));
+      lists.offsets[k + 1] = Index(used - first);
     }
 #pragma omp barrier
 #pragma omp single
@@ -194,8 +204,9 @@ void NeighbourGrid::buildSlotNeighbourLists(Real radius, NeighbourLists& lists) 
       if (total <= std::numeric_limits<Index>::max()) lists.indices.resize(std::size_t(total));
     }
     // The implicit barrier of `single` makes offsets and indices visible to every thread.
-    if (total <= std::numeric_limits<Index>::max() && !buffer.empty())
-      std::copy(buffer.begin(), buffer.end(), lists.indices.begin() + std::ptrdiff_t(lists.offsets[begin]));
+    if (total <= std::numeric_limits<Index>::max() && used > 0)
+      std::copy(buffer.begin(), buffer.begin() + std::ptrdiff_t(used),
+                lists.indices.begin() + std::ptrdiff_t(lists.offsets[begin]));
   }
   if (total > std::numeric_limits<Index>::max()) throw std::length_error("NeighbourGrid: too many neighbour pairs");
 }

@@ -133,14 +133,11 @@ class NeighbourGrid {
     }
   }
 
-  // Calls f(slot j) for every slot j != k closer than sqrt(r2) to slot k.
+  // Calls run(begin, end) for every run of slots [begin, end) that may hold neighbours of
+  // slot k: 9 runs of 3 cells in the dense layout (in increasing slot order), the distinct
+  // buckets around it in the hashed layout.
   template <class F>
-  void forEachSlotNeighbour(Index k, Real r2, F&& f) const {
-    const Vec3 x = m_sortedPositions[k];
-    auto scanSlots = [&](Index begin, Index end) {
-      for (Index j = begin; j < end; ++j)
-        if (j != k && (x - m_sortedPositions[j]).squaredNorm() < r2) f(j);
-    };
+  void forEachCandidateRun(Index k, F&& run) const {
     const Index key = m_cellOf[m_sorted[k]];
     if (!m_hashed) {
       const std::int64_t cx = std::int64_t(key) % m_dims[0];
@@ -152,11 +149,11 @@ class NeighbourGrid {
       for (std::int64_t z = z0; z <= z1; ++z)
         for (std::int64_t y = y0; y <= y1; ++y) {
           const std::int64_t row = (z * m_dims[1] + y) * m_dims[0];
-          scanSlots(m_cellStart[std::size_t(row + x0)], m_cellStart[std::size_t(row + x1 + 1)]);
+          run(m_cellStart[std::size_t(row + x0)], m_cellStart[std::size_t(row + x1 + 1)]);
         }
       return;
     }
-    const Coord c = cellCoord(x);
+    const Coord c = cellCoord(m_sortedPositions[k]);
     std::array<Index, 27> buckets;
     int n = 0;
     for (std::int64_t dz = -1; dz <= 1; ++dz)
@@ -164,7 +161,7 @@ class NeighbourGrid {
         for (std::int64_t dx = -1; dx <= 1; ++dx) buckets[std::size_t(n++)] = bucketOf(c[0] + dx, c[1] + dy, c[2] + dz);
     std::sort(buckets.begin(), buckets.end());
     const auto last = std::unique(buckets.begin(), buckets.end());
-    for (auto b = buckets.begin(); b != last; ++b) scanSlots(m_cellStart[*b], m_cellStart[*b + 1]);
+    for (auto b = buckets.begin(); b != last; ++b) run(m_cellStart[*b], m_cellStart[*b + 1]);
   }
 
   template <class F>
