@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <memory>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -22,6 +23,22 @@ std::string str(double value) {
 }
 
 std::string vec(const Vec3& v) { return "[" + str(v.x()) + ", " + str(v.y()) + ", " + str(v.z()) + "]"; }
+
+// The box [lower, upper] as 12 triangles (two per face), wound with normals pointing into
+// the box, where the blood is.
+std::shared_ptr<const pbd::StaticMeshCollider> boxMesh(const Vec3& lower, const Vec3& upper, Real cellSize) {
+  std::vector<Vec3> v;
+  for (int k = 0; k < 8; ++k)
+    v.emplace_back((k & 1) ? upper.x() : lower.x(), (k & 2) ? upper.y() : lower.y(), (k & 4) ? upper.z() : lower.z());
+  // Corners by bits (x, y, z); each face listed counter-clockwise seen from inside.
+  const std::vector<pbd::Triangle> t = {{0, 1, 3}, {0, 3, 2},   // z = lower
+                                        {4, 6, 7}, {4, 7, 5},   // z = upper
+                                        {0, 4, 5}, {0, 5, 1},   // y = lower
+                                        {2, 3, 7}, {2, 7, 6},   // y = upper
+                                        {0, 2, 6}, {0, 6, 4},   // x = lower
+                                        {1, 5, 7}, {1, 7, 3}};  // x = upper
+  return std::make_shared<const pbd::StaticMeshCollider>(std::move(v), t, cellSize);
+}
 
 double physicalMemoryBytes() {
   const long pages = sysconf(_SC_PHYS_PAGES);
@@ -56,6 +73,8 @@ pbd::FluidStepSettings bloodSolverSettings(const Scenario& scenario, int threads
   s.particleRadius = b.radius;
   if (scenario.container.enabled && !scenario.container.mesh)
     s.walls = pbd::boxWalls(scenario.container.min, scenario.container.max);
+  if (scenario.container.enabled && scenario.container.mesh)
+    s.mesh = boxMesh(scenario.container.min, scenario.container.max, 4 * b.radius);
 
   // Explicit viscosity is stable for dt <= 0.125 h^2 / nu (Monaghan 2005, section 6.3).
   const double nu = double(f.kinematicViscosity);

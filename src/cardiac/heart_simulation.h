@@ -47,6 +47,10 @@ class HeartSimulation {
   // Blood particles are [firstBloodParticle(), particles().size()).
   [[nodiscard]] Index firstBloodParticle() const { return m_firstBloodParticle; }
   [[nodiscard]] BloodStats bloodStats() const;
+  // The creation index (0 .. count-1, in start-block order) of each blood particle: the
+  // particles are reordered along a Morton curve every kReorderInterval steps.
+  [[nodiscard]] const std::vector<Index>& bloodIds() const { return m_bloodIds; }
+  static constexpr int kReorderInterval = 50;
   [[nodiscard]] double time() const { return double(m_steps) * double(m_solver.dt); }
   [[nodiscard]] std::int64_t stepCount() const { return m_steps; }
   // Phase during the last step (what the wall was doing), Systole before the first.
@@ -69,6 +73,8 @@ class HeartSimulation {
   Index m_firstBloodParticle = 0;
   std::optional<CardiacCycle> m_cycle;
   std::unique_ptr<pbd::FluidSolver> m_fluid;
+  std::vector<Index> m_bloodIds;
+  void reorderBlood();
   std::vector<Real> m_restVolume;  // per model tet
   std::int64_t m_steps = 0;
   Phase m_lastPhase = Phase::Systole;

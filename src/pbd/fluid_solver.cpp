@@ -10,7 +10,8 @@
 namespace hs::pbd {
 namespace {
 
-// Below this many fluid particles a fork-join costs more than the per-particle loops here.
+// Below this many fluid particles a fork-join costs more than these streaming loops save
+// (the neighbour loops of fluid.cpp split from 256).
 constexpr std::size_t kParallelThreshold = 2048;
 
 NeighbourGridSettings gridSettingsFor(int threads) {
@@ -70,15 +71,18 @@ void FluidSolver::projectDensity(Particles& particles) {
   m_grid.build(m_gathered, fluid.supportRadius);
   m_grid.buildSlotNeighbourLists(fluid.supportRadius, m_lists);
   const std::vector<Index>& sorted = m_grid.sortedIndices();
+  const StaticMeshCollider* const mesh = m_settings.mesh.get();
   m_slotParticle.resize(m_fluid.size());
   m_p.resize(m_fluid.size());
   m_w.resize(m_fluid.size());
+  m_x.resize(mesh ? m_fluid.size() : 0);
 #pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     const Index particle = m_fluid[sorted[k]];
     m_slotParticle[k] = particle;
     m_p[k] = m_grid.sortedPositions()[k];
     m_w[k] = particles.inverseMass[particle];
+    if (mesh) m_x[k] = particles.position[particle];
   }
 
   const std::span<const Index> all(m_slots);
@@ -94,6 +98,7 @@ void FluidSolver::projectDensity(Particles& particles) {
       if (m_w[s] <= Real(0)) continue;  // pinned
       Vec3 p = m_p[s] + m_dp[s];
       for (const Plane& plane : walls) p += projectPlaneCollision(p, m_w[s], plane, radius);
+      if (mesh) p = mesh->collide(m_x[s], p, radius);
       m_p[s] = p;
     }
   }

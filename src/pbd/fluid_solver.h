@@ -21,11 +21,13 @@
 // with tissue should call applyExternalForces/predictPositions itself and use
 // projectDensity() between prediction and the velocity update and postProcessVelocities()
 // after it.
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "pbd/constraints.h"
 #include "pbd/fluid.h"
+#include "pbd/mesh_collider.h"
 #include "pbd/neighbour_grid.h"
 #include "pbd/particles.h"
 #include "pbd/solver.h"
@@ -39,6 +41,10 @@ struct FluidStepSettings {
   FluidSettings fluid;          // rho0, m, h, eps, s_corr, XSPH c
   Real particleRadius = Real(0.08);  // m, distance kept from the walls (thesis: 0.08 m)
   std::vector<Plane> walls;     // normals point into the fluid's allowed half-space
+  // Static triangle-mesh walls (a container, a vessel): after the planes, every particle is
+  // kept particleRadius from the mesh on the side it came from (mesh_collider.h). Shared,
+  // read-only: copies of the settings use the same mesh.
+  std::shared_ptr<const StaticMeshCollider> mesh;
 };
 
 class FluidSolver {
@@ -85,6 +91,7 @@ class FluidSolver {
   std::vector<Index> m_slots;      // 0 .. fluid count - 1: the subset for fluid.h
   std::vector<Index> m_slotParticle;  // particle index of each slot (cell order)
   std::vector<Vec3> m_p;           // slot predicted positions
+  std::vector<Vec3> m_x;           // slot start-of-step positions (mesh collisions only)
   std::vector<Real> m_w;           // slot inverse masses
   NeighbourLists m_lists;          // over slots
   std::vector<Real> m_density;

@@ -1,6 +1,9 @@
 #pragma once
 // Particle state as structure-of-arrays. Every simulated point, wall vertex or blood particle,
 // lives here; `kind` lets later stages (fluid density, coupling) select their own particles.
+#include <algorithm>
+#include <cassert>
+#include <type_traits>
 #include <vector>
 
 #include "pbd/types.h"
@@ -27,5 +30,24 @@ struct Particles {
     return static_cast<Index>(position.size() - 1);
   }
 };
+
+// Permutes the particles [first, first + order.size()): slot first + k receives the particle
+// that was at first + order[k], with all its state. Used to keep spatial neighbours close in
+// memory (neighbour_grid.h, mortonOrder).
+inline void permuteRange(Particles& particles, Index first, const std::vector<Index>& order) {
+  assert(first + order.size() <= particles.size());
+  auto permute = [&](auto& values) {
+    using T = typename std::decay_t<decltype(values)>::value_type;
+    std::vector<T> moved;
+    moved.reserve(order.size());
+    for (const Index o : order) moved.push_back(values[first + o]);
+    std::copy(moved.begin(), moved.end(), values.begin() + first);
+  };
+  permute(particles.position);
+  permute(particles.predicted);
+  permute(particles.velocity);
+  permute(particles.inverseMass);
+  permute(particles.kind);
+}
 
 }  // namespace hs::pbd

@@ -120,8 +120,10 @@ void projectConstraints(ConstraintSet& constraints, Particles& particles,
   resetLambdas(constraints.distances);
   resetLambdas(constraints.areas);
   resetLambdas(constraints.volumes);
-  const std::size_t work = constraints.distances.size() + constraints.areas.size() +
-                           constraints.volumes.size() + particles.size();
+  const std::size_t constraintCount = constraints.distances.size() + constraints.areas.size() +
+                                      constraints.volumes.size() + constraints.planes.size();
+  if (constraintCount == 0) return;  // e.g. blood only: its constraints are the fluid solver's
+  const std::size_t work = constraintCount + particles.size();
   // One parallel region for all iterations: threads meet only at the end of each colour.
 #pragma omp parallel num_threads(settings.threads) if (work >= kParallelThreshold)
   {

@@ -100,9 +100,10 @@ DensitySolve solveDensityOnce(const std::vector<Vec3>& x, const NeighbourLists& 
                               const std::vector<Index>& subset, const SphKernels& kernels,
                               const FluidSettings& s) {
   DensitySolve out;
-  computeDensities(x, lists, subset, kernels, s, out.rho);
-  computeDensityConstraints(out.rho, subset, s, out.c);
+  // computeLambdas computes the densities it uses; C comes from those, so the lambda check
+  // below compares like with like (computeDensities sums in another order).
   computeLambdas(x, lists, subset, kernels, s, out.rho, out.lambda);
+  computeDensityConstraints(out.rho, subset, s, out.c);
   computeDensityCorrections(x, lists, subset, kernels, s, out.lambda, out.dp);
   return out;
 }

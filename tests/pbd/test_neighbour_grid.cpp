@@ -332,3 +332,71 @@ TEST(NeighbourGrid, RebuildWithSameCountDoesNotReallocate) {
 
 }  // namespace
 }  // namespace hs::pbd
+
+namespace hs::pbd {
+namespace {
+
+// Slot lists (the fluid solver's fast path) against brute force: the neighbours of slot k
+// are exactly the particles within the radius of sortedIndices()[k], as slots, ascending in
+// the dense layout; identical for 1 and 2 threads; no reallocation once warmed up.
+void checkSlotLists(const std::vector<Vec3>& x, Real h, bool forceHashing) {
+  for (int threads : {1, 2}) {
+    NeighbourGridSettings s;
+    s.threads = threads;
+    s.forceHashing = forceHashing;
+    NeighbourGrid grid(s);
+    grid.build(x, h);
+    NeighbourLists lists;
+    grid.buildSlotNeighbourLists(h, lists);
+    const auto& sorted = grid.sortedIndices();
+    ASSERT_EQ(lists.offsets.size(), x.size() + 1);
+    for (std::size_t k = 0; k < x.size(); ++k) {
+      const Index i = sorted[k];
+      std::vector<Index> expected;
+      for (Index j = 0; j < x.size(); ++j)
+        if (j != i && (x[i] - x[j]).squaredNorm() < h * h) expected.push_back(j);
+      std::vector<Index> got;
+      for (Index e = lists.offsets[k]; e < lists.offsets[k + 1]; ++e) {
+        if (e > lists.offsets[k]) {
+          EXPECT_LT(lists.indices[e - 1], lists.indices[e]) << "slot " << k;
+        }
+        got.push_back(sorted[lists.indices[e]]);
+      }
+      std::sort(got.begin(), got.end());
+      ASSERT_EQ(got, expected) << "slot " << k << " (particle " << i << "), threads " << threads;
+    }
+    // Rebuilding the same cloud reuses every buffer.
+    const Index* before = lists.indices.data();
+    const std::size_t capacity = lists.indices.capacity();
+    grid.build(x, h);
+    grid.buildSlotNeighbourLists(h, lists);
+    EXPECT_EQ(lists.indices.data(), before);
+    EXPECT_EQ(lists.indices.capacity(), capacity);
+  }
+}
+
+TEST(NeighbourGridSlots, SlotListsEqualBruteForceOnRandomCloudsCellBoundariesAndOutliers) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0, 1.5);
+  const Real h = Real(0.25);
+  std::vector<Vec3> cloud(3000);
+  for (auto& p : cloud) p = Vec3(Real(u(rng)), Real(u(rng)), Real(u(rng)));
+  checkSlotLists(cloud, h, false);
+  checkSlotLists(cloud, h, true);
+  // Particles exactly on cell boundaries and exactly h apart (excluded: strictly closer).
+  std::vector<Vec3> lattice;
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 8; ++j)
+      for (int k = 0; k < 4; ++k) lattice.push_back(h * Vec3(Real(i), Real(j), Real(k)));
+  checkSlotLists(lattice, h, false);
+  // A few particles far outside the initial domain.
+  std::vector<Vec3> outliers = cloud;
+  outliers.resize(500);
+  outliers.push_back(Vec3(1e6, 0, 0));
+  outliers.push_back(Vec3(1e6, Real(0.1), 0));
+  outliers.push_back(Vec3(-3e7, 5e5, 2e6));
+  checkSlotLists(outliers, h, false);
+}
+
+}  // namespace
+}  // namespace hs::pbd
