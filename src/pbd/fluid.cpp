@@ -10,7 +10,7 @@ namespace {
 
 // Below this many particles a fork-join costs more than a neighbour loop saves. Measured with
 // `heartsim bench --case pbf-dam-break-1k --threads 2`: a threshold of 2048 (serial at 1,000
-// particles) gave 640 steps/s, 256 gave 1,060.
+// particles) gave 640 steps/s, 256 gave about 1,000.
 constexpr std::ptrdiff_t kParallelThreshold = 256;
 
 // Outputs cover every particle index; entries outside the subset keep their values.
@@ -129,30 +129,25 @@ void computeLambdas(const std::vector<Vec3>& positions, const NeighbourLists& li
     const Vec3& xi = positions[i];
     // PBF eq. 8: grad_{p_i} C_i = (m/rho0) sum_j grad W_ij, grad_{p_j} C_i = -(m/rho0) grad W_ij.
     // One loop for rho_i (PBF eq. 2, self term first) and the gradient sums.
-    // Plain scalars and `omp simd` (a fixed-width vector reduction, so the summation order is
-    // fixed by the build, not by the thread count): the loop runs 4 pairs at a time.
-    Real poly6Sum = 0, gx = 0, gy = 0, gz = 0, sumSqJ = 0;
-    const Index begin = lists.offsets[i], end = lists.offsets[i + 1];
-#pragma omp simd reduction(+ : poly6Sum, gx, gy, gz, sumSqJ)
-    for (Index k = begin; k < end; ++k) {
-      const Vec3& xj = positions[lists.indices[k]];
-      const Real rx = xi.x() - xj.x(), ry = xi.y() - xj.y(), rz = xi.z() - xj.z();
-      const Real r2 = rx * rx + ry * ry + rz * rz;
-      const Real t = std::max(Real(0), Real(1) - r2 * kernels.invH2);  // poly6, clamped at h
-      poly6Sum += t * t * t;
+    Real kernelSum = selfTerm;
+    Vec3 gradI = Vec3::Zero();
+    Real sumSqJ = 0;
+    for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k) {
+      const Index j = lists.indices[k];
+      const Vec3 r = xi - positions[j];
+      const Real r2 = r.squaredNorm();
+      kernelSum += poly6Clamped(kernels, r2);
       const Real gs = spikyGradientScale(kernels, std::sqrt(r2));
       if (pairOut) pairOut[k] = gs;
-      const Real g = gradScale * gs;  // grad_{p_j} C_i = -g r_ij
-      gx += g * rx;
-      gy += g * ry;
-      gz += g * rz;
-      sumSqJ += g * g * r2;
+      const Vec3 g = (gradScale * gs) * r;
+      gradI += g;
+      sumSqJ += g.squaredNorm();
     }
-    const Real rho = m * (selfTerm + kernels.poly6Coeff * poly6Sum);
+    const Real rho = m * kernelSum;
     densities[i] = rho;
     const Real c = rho * invRho0 - Real(1);  // PBF eq. 1
     // PBF eq. 11: lambda_i = -C_i / (sum_k |grad_{p_k} C_i|^2 + eps).
-    const Real lambda = -c / (gx * gx + gy * gy + gz * gz + sumSqJ + settings.relaxation);
+    const Real lambda = -c / (gradI.squaredNorm() + sumSqJ + settings.relaxation);
     lambdas[i] = unilateral ? std::min(lambda, Real(0)) : lambda;
   }
 }
@@ -182,25 +177,9 @@ void computeDensityCorrections(const std::vector<Vec3>& positions, const Neighbo
     const Vec3& xi = positions[i];
     const Real li = lambdas[i];
     // PBF eq. 12: dp_i = (m/rho0) sum_j (lambda_i + lambda_j + s_corr) grad W(p_i - p_j).
-    const Index begin = lists.offsets[i], end = lists.offsets[i + 1];
-    if (pairIn && !tensile && !collide) {
-      // The common case, vectorised as in computeLambdas: cached gradients, no extra terms.
-      Real sx = 0, sy = 0, sz = 0;
-#pragma omp simd reduction(+ : sx, sy, sz)
-      for (Index k = begin; k < end; ++k) {
-        const Index j = lists.indices[k];
-        const Vec3& xj = positions[j];
-        const Real w = (li + lambdas[j]) * pairIn[k];
-        sx += w * (xi.x() - xj.x());
-        sy += w * (xi.y() - xj.y());
-        sz += w * (xi.z() - xj.z());
-      }
-      corrections[i] = scale * Vec3(sx, sy, sz);
-      continue;
-    }
     Vec3 sum = Vec3::Zero();
     Vec3 push = Vec3::Zero();
-    for (Index k = begin; k < end; ++k) {
+    for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k) {
       const Index j = lists.indices[k];
       const Vec3 r = xi - positions[j];
       const Real r2 = r.squaredNorm();
@@ -237,30 +216,19 @@ void applyViscosity(const std::vector<Vec3>& positions, const std::vector<Vec3>&
     const Index i = subset[std::size_t(s)];
     const Vec3& xi = positions[i];
     const Vec3& vi = velocities[i];
-    // Vectorised like computeLambdas (omp simd: fixed summation order per build).
-    Real ax = 0, ay = 0, az = 0, bx = 0, by = 0, bz = 0;
-    const Index begin = lists.offsets[i], end = lists.offsets[i + 1];
-#pragma omp simd reduction(+ : ax, ay, az, bx, by, bz)
-    for (Index k = begin; k < end; ++k) {
+    Vec3 xsph = Vec3::Zero();
+    Vec3 viscous = Vec3::Zero();
+    for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k) {
       const Index j = lists.indices[k];
-      const Vec3& xj = positions[j];
-      const Vec3& vj = velocities[j];
-      const Real rx = xi.x() - xj.x(), ry = xi.y() - xj.y(), rz = xi.z() - xj.z();
-      const Real r2 = rx * rx + ry * ry + rz * rz;
-      const Real ux = vi.x() - vj.x(), uy = vi.y() - vj.y(), uz = vi.z() - vj.z();  // v_ij
+      const Vec3 r = xi - positions[j];
+      const Real r2 = r.squaredNorm();
+      const Vec3 vij = vi - velocities[j];
       // PBF eq. 17: c sum_j (v_j - v_i) W_poly6(x_i - x_j).
-      const Real t = std::max(Real(0), Real(1) - r2 * kernels.invH2);
-      const Real w = t * t * t;
-      ax -= w * ux;
-      ay -= w * uy;
-      az -= w * uz;
+      xsph -= poly6(kernels, r2) * vij;
       // Monaghan 2005 eq. 6.13: (v_ij . x_ij)/(|x_ij|^2 + 0.01 h^2) grad W(x_ij).
-      const Real f = (ux * rx + uy * ry + uz * rz) / (r2 + softening) * spikyGradientScale(kernels, std::sqrt(r2));
-      bx += f * rx;
-      by += f * ry;
-      bz += f * rz;
+      viscous += (vij.dot(r) / (r2 + softening)) * spikyGradient(kernels, r, std::sqrt(r2));
     }
-    newVelocities[i] = vi + (c * kernels.poly6Coeff) * Vec3(ax, ay, az) + laplace * Vec3(bx, by, bz);
+    newVelocities[i] = vi + c * xsph + laplace * viscous;
   }
 }
 
