@@ -25,7 +25,7 @@ TEST(BeatClock, FollowsAlgorithm2StepByStep) {
     for (int i = 1; i <= 8; ++i) {
       ASSERT_EQ(clock.phase(), Phase::Systole) << "beat " << beat << " step " << i;
       // Lines 7-8: move by BEATING_DISPLACE, steps++.
-      EXPECT_FLOAT_EQ(clock.advance(), 0.08f);
+      EXPECT_NEAR(double(clock.advance()), 0.08, 1e-7);
       // Lines 9-11: when steps >= BEATING_DURATION, steps = 0 and the state switches.
       if (i < 8) {
         EXPECT_EQ(clock.stepsInPhase(), i);
