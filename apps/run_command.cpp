@@ -17,6 +17,7 @@
 #include "io/scenario_file.h"
 #include "io/vtk_writer.h"
 #include "progress_bar.h"
+#include "simulation_setup.h"
 
 namespace hs::app {
 namespace {
@@ -157,16 +158,9 @@ int runCommand(const RunOptions& options) {
     scenario.simulation.duration = static_cast<pbd::Real>(*options.duration);
   }
   const int threads = options.threads > 0 ? options.threads : omp_get_num_procs();
-  std::unique_ptr<cardiac::HeartSimulation> simPtr;
-  try {
-    simPtr = std::make_unique<cardiac::HeartSimulation>(scenario, threads);
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "heartsim: error: " << options.scenario << ": " << e.what() << '\n';
-    return kExitBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "heartsim: error: " << options.scenario << ": could not set up the simulation: " << e.what() << '\n';
-    return kExitFailure;
-  }
+  int setupError = kExitOk;
+  const std::unique_ptr<cardiac::HeartSimulation> simPtr = makeSimulation(scenario, threads, options.scenario, setupError);
+  if (!simPtr) return setupError;
   cardiac::HeartSimulation& sim = *simPtr;
   const double setupSeconds = secondsSince(setupStart);
 

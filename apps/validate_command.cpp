@@ -16,6 +16,7 @@
 #include "exit_codes.h"
 #include "io/scenario_file.h"
 #include "progress_bar.h"
+#include "simulation_setup.h"
 #include "viz/plot.h"
 
 namespace hs::app {
@@ -144,13 +145,9 @@ int validateDamBreakCommand(const ValidateOptions& options) {
     return kExitBadInput;
   }
   const int threads = options.threads > 0 ? options.threads : omp_get_num_procs();
-  std::unique_ptr<cardiac::HeartSimulation> sim;
-  try {
-    sim = std::make_unique<cardiac::HeartSimulation>(scenario, threads);
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "heartsim: error: " << options.scenario << ": " << e.what() << '\n';
-    return kExitBadInput;
-  }
+  int setupError = kExitOk;
+  const std::unique_ptr<cardiac::HeartSimulation> sim = makeSimulation(scenario, threads, options.scenario, setupError);
+  if (!sim) return setupError;
   const fs::path outDir(options.outDir);
   std::error_code ec;
   fs::create_directories(outDir, ec);

@@ -138,14 +138,25 @@ class NeighbourGrid {
   // buckets around it in the hashed layout.
   template <class F>
   void forEachCandidateRun(Index k, F&& run) const {
-    const Index key = m_cellOf[m_sorted[k]];
     if (!m_hashed) {
-      const std::int64_t cx = std::int64_t(key) % m_dims[0];
-      const std::int64_t cy = (std::int64_t(key) / m_dims[0]) % m_dims[1];
-      const std::int64_t cz = std::int64_t(key) / (m_dims[0] * m_dims[1]);
-      const std::int64_t x0 = std::max<std::int64_t>(cx - 1, 0), x1 = std::min(cx + 1, m_dims[0] - 1);
-      const std::int64_t y0 = std::max<std::int64_t>(cy - 1, 0), y1 = std::min(cy + 1, m_dims[1] - 1);
-      const std::int64_t z0 = std::max<std::int64_t>(cz - 1, 0), z1 = std::min(cz + 1, m_dims[2] - 1);
+      const auto key = std::int64_t(m_cellOf[m_sorted[k]]);
+      const Coord c{key % m_dims[0], (key / m_dims[0]) % m_dims[1], key / (m_dims[0] * m_dims[1])};
+      forEachRunAround(c, run);
+    } else {
+      forEachRunAround(cellCoord(m_sortedPositions[k]), run);
+    }
+  }
+
+  // The runs of slots in the 27 cells around cell c. Dense layout: cells (x-1..x+1, y, z) are
+  // consecutive, so 9 ranges, not 27 (none when c lies outside the grid on the x axis).
+  // Hashed: the 27 cells may share buckets; each bucket is visited once.
+  template <class F>
+  void forEachRunAround(const Coord& c, F& run) const {
+    if (!m_hashed) {
+      const std::int64_t x0 = std::max<std::int64_t>(c[0] - 1, 0), x1 = std::min(c[0] + 1, m_dims[0] - 1);
+      const std::int64_t y0 = std::max<std::int64_t>(c[1] - 1, 0), y1 = std::min(c[1] + 1, m_dims[1] - 1);
+      const std::int64_t z0 = std::max<std::int64_t>(c[2] - 1, 0), z1 = std::min(c[2] + 1, m_dims[2] - 1);
+      if (x0 > x1) return;
       for (std::int64_t z = z0; z <= z1; ++z)
         for (std::int64_t y = y0; y <= y1; ++y) {
           const std::int64_t row = (z * m_dims[1] + y) * m_dims[0];
@@ -153,7 +164,6 @@ class NeighbourGrid {
         }
       return;
     }
-    const Coord c = cellCoord(m_sortedPositions[k]);
     std::array<Index, 27> buckets;
     int n = 0;
     for (std::int64_t dz = -1; dz <= 1; ++dz)
@@ -169,29 +179,8 @@ class NeighbourGrid {
     assert(radius <= m_cellSize || m_count == 0);
     if (m_count == 0) return;
     const Real r2 = radius * radius;
-    const Coord c = cellCoord(x);
-    if (!m_hashed) {
-      // Cells (x-1..x+1, y, z) are consecutive in the dense layout: 9 ranges, not 27.
-      const std::int64_t x0 = std::max<std::int64_t>(c[0] - 1, 0), x1 = std::min(c[0] + 1, m_dims[0] - 1);
-      const std::int64_t y0 = std::max<std::int64_t>(c[1] - 1, 0), y1 = std::min(c[1] + 1, m_dims[1] - 1);
-      const std::int64_t z0 = std::max<std::int64_t>(c[2] - 1, 0), z1 = std::min(c[2] + 1, m_dims[2] - 1);
-      if (x0 > x1) return;
-      for (std::int64_t z = z0; z <= z1; ++z)
-        for (std::int64_t y = y0; y <= y1; ++y) {
-          const std::int64_t row = (z * m_dims[1] + y) * m_dims[0];
-          scan(m_cellStart[std::size_t(row + x0)], m_cellStart[std::size_t(row + x1 + 1)], x, r2, skip, f);
-        }
-      return;
-    }
-    // Hashed: the 27 cells may share buckets; visit each bucket once.
-    std::array<Index, 27> buckets;
-    int n = 0;
-    for (std::int64_t dz = -1; dz <= 1; ++dz)
-      for (std::int64_t dy = -1; dy <= 1; ++dy)
-        for (std::int64_t dx = -1; dx <= 1; ++dx) buckets[std::size_t(n++)] = bucketOf(c[0] + dx, c[1] + dy, c[2] + dz);
-    std::sort(buckets.begin(), buckets.end());
-    const auto last = std::unique(buckets.begin(), buckets.end());
-    for (auto b = buckets.begin(); b != last; ++b) scan(m_cellStart[*b], m_cellStart[*b + 1], x, r2, skip, f);
+    auto scanRun = [&](Index begin, Index end) { scan(begin, end, x, r2, skip, f); };
+    forEachRunAround(cellCoord(x), scanRun);
   }
 
   NeighbourGridSettings m_settings;

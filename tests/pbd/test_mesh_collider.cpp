@@ -3,6 +3,8 @@
 // around a free edge, degenerate triangles, thread independence, and clear errors.
 #include <gtest/gtest.h>
 
+#include "thrown_message.h"
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -317,18 +319,6 @@ TEST(MeshCollider, SameResultOnAnyThreadCount) {
   EXPECT_NE(serial, predicted);
 }
 
-// Runs f, expects std::invalid_argument, and returns its message.
-template <class F>
-std::string invalidArgumentMessage(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no std::invalid_argument thrown";
-  return {};
-}
-
 TEST(MeshCollider, BadInputThrowsNamingTriangleOrVertex) {
   const std::vector<Vec3> v{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
   auto expectContains = [](const std::string& message, const std::vector<std::string>& parts) {
@@ -336,29 +326,29 @@ TEST(MeshCollider, BadInputThrowsNamingTriangleOrVertex) {
       EXPECT_NE(message.find(p), std::string::npos) << message << " lacks " << p;
     EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
   };
-  expectContains(invalidArgumentMessage([&] {
+  expectContains(hs::testing::thrownMessage<std::invalid_argument>([&] {
                    StaticMeshCollider(v, {{0, 1, 2}, {0, 5, 1}}, Real(0.1));
                  }),
                  {"triangle 1", "vertex 5", "< 3"});
-  expectContains(invalidArgumentMessage([&] {
+  expectContains(hs::testing::thrownMessage<std::invalid_argument>([&] {
                    (void)collideBruteForce(v, {{3, 1, 2}}, Vec3::Zero(), Vec3::Ones(), 1);
                  }),
                  {"triangle 0", "vertex 3", "< 3"});
   std::vector<Vec3> bad = v;
   bad[2][1] = std::nanf("");
-  expectContains(invalidArgumentMessage([&] {
+  expectContains(hs::testing::thrownMessage<std::invalid_argument>([&] {
                    StaticMeshCollider(bad, {{0, 1, 2}}, Real(0.1));
                  }),
                  {"triangle 0", "vertex 2", "nan", "finite"});
   bad = v;
   bad.push_back(Vec3(std::numeric_limits<Real>::infinity(), 0, 0));
-  expectContains(invalidArgumentMessage([&] {
+  expectContains(hs::testing::thrownMessage<std::invalid_argument>([&] {
                    StaticMeshCollider(bad, {{0, 1, 2}}, Real(0.1));
                  }),
                  {"vertex 3", "finite"});
   for (Real cell :
        {Real(0), Real(-1), std::numeric_limits<Real>::quiet_NaN(), std::numeric_limits<Real>::infinity()})
-    expectContains(invalidArgumentMessage([&] {
+    expectContains(hs::testing::thrownMessage<std::invalid_argument>([&] {
                      StaticMeshCollider(v, {{0, 1, 2}}, cell);
                    }),
                    {"cellSize", "> 0"});

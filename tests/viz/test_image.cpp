@@ -1,6 +1,8 @@
 // Image: PNG round trip and clear I/O errors, text, lines, markers, clipping, composition.
 #include <gtest/gtest.h>
 
+#include "thrown_message.h"
+
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -14,7 +16,7 @@ namespace {
 constexpr Rgb kRed{200, 30, 40};
 
 std::string tempPath(const std::string& name) {
-  return (std::filesystem::path(testing::TempDir()) / name).string();
+  return (std::filesystem::path(::testing::TempDir()) / name).string();
 }
 
 // Bounding box of the pixels that differ from white; empty Rect if none.
@@ -30,17 +32,6 @@ Rect inkBox(const Image& image) {
     }
   }
   return x1 < 0 ? Rect{} : Rect{x0, y0, x1 - x0 + 1, y1 - y0 + 1};
-}
-
-template <class F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no exception thrown";
-  return {};
 }
 
 TEST(Image, PngRoundTripKeepsEveryPixel) {
@@ -62,19 +53,19 @@ TEST(Image, PngRoundTripKeepsEveryPixel) {
 
 TEST(Image, UnwritablePathThrowsNamingThePath) {
   const Image image(4, 4);
-  const std::string message = errorOf([&] { image.savePng("/nonexistent-dir/x.png"); });
+  const std::string message = hs::testing::thrownMessage<std::exception>([&] { image.savePng("/nonexistent-dir/x.png"); });
   EXPECT_NE(message.find("cannot write PNG '/nonexistent-dir/x.png'"), std::string::npos) << message;
   EXPECT_NE(message.find("No such file or directory"), std::string::npos) << message;
 }
 
 TEST(Image, UnreadableOrInvalidPngThrowsNamingThePath) {
-  EXPECT_NE(errorOf([] {
+  EXPECT_NE(hs::testing::thrownMessage<std::exception>([] {
               Image::loadPng("/nonexistent-dir/x.png");
             }).find("cannot read PNG '/nonexistent-dir/x.png'"),
             std::string::npos);
   const std::string path = tempPath("viz-not-a-png.png");
   std::ofstream(path) << "this is text, not an image";
-  EXPECT_NE(errorOf([&] { Image::loadPng(path); }).find("cannot read PNG '" + path + "'"), std::string::npos);
+  EXPECT_NE(hs::testing::thrownMessage<std::exception>([&] { Image::loadPng(path); }).find("cannot read PNG '" + path + "'"), std::string::npos);
 }
 
 TEST(Image, AtOutsideThrowsAndSetOutsideIsIgnored) {

@@ -2,6 +2,8 @@
 // name the series or the path.
 #include <gtest/gtest.h>
 
+#include "thrown_message.h"
+
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -58,17 +60,6 @@ std::size_t countColour(const Image& image, const Rect& r, Rgb colour) {
       n += image.at(x, y) == colour;
   }
   return n;
-}
-
-template <class F>
-std::string invalidArgumentOf(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no std::invalid_argument thrown";
-  return {};
 }
 
 TEST(Plot, MarkersLandWherePlotFrameMapsThem) {
@@ -194,23 +185,23 @@ TEST(Plot, SeriesAreClippedToThePlotArea) {
 TEST(Plot, BadSeriesThrowNamingTheSeries) {
   PlotSpec spec = exampleSpec();
   spec.series.push_back(makeSeries("bad", {1.0, 2.0}, {1.0}));
-  const std::string mismatch = invalidArgumentOf([&] { renderPlot(spec); });
+  const std::string mismatch = hs::testing::thrownMessage<std::invalid_argument>([&] { renderPlot(spec); });
   EXPECT_NE(mismatch.find("series 'bad'"), std::string::npos) << mismatch;
   EXPECT_NE(mismatch.find("x has 2 values but y has 1"), std::string::npos) << mismatch;
 
   spec.series.back() = makeSeries("nan", {1.0, 2.0}, {1.0, std::nan("")});
-  EXPECT_NE(invalidArgumentOf([&] { PlotFrame{spec}; }).find("series 'nan': point 1"), std::string::npos);
+  EXPECT_NE(hs::testing::thrownMessage<std::invalid_argument>([&] { PlotFrame{spec}; }).find("series 'nan': point 1"), std::string::npos);
   spec.series.back() = makeSeries("", {std::numeric_limits<double>::infinity()}, {1.0});
-  EXPECT_NE(invalidArgumentOf([&] { validatePlotSpec(spec); }).find("series #2"), std::string::npos);
+  EXPECT_NE(hs::testing::thrownMessage<std::invalid_argument>([&] { validatePlotSpec(spec); }).find("series #2"), std::string::npos);
 }
 
 TEST(Plot, BadRangesAndSizesThrow) {
   PlotSpec spec = exampleSpec();
   spec.xRange = {1.0, 1.0};
-  EXPECT_NE(invalidArgumentOf([&] { renderPlot(spec); }).find("xRange"), std::string::npos);
+  EXPECT_NE(hs::testing::thrownMessage<std::invalid_argument>([&] { renderPlot(spec); }).find("xRange"), std::string::npos);
   spec.xRange.reset();
   spec.yRange = {0.0, std::numeric_limits<double>::infinity()};
-  EXPECT_NE(invalidArgumentOf([&] { renderPlot(spec); }).find("yRange"), std::string::npos);
+  EXPECT_NE(hs::testing::thrownMessage<std::invalid_argument>([&] { renderPlot(spec); }).find("yRange"), std::string::npos);
   spec.yRange.reset();
   spec.width = 10;
   EXPECT_THROW(renderPlot(spec), std::invalid_argument);
@@ -218,7 +209,7 @@ TEST(Plot, BadRangesAndSizesThrow) {
 
 TEST(Plot, WritePngRoundTripsAndNamesAnUnwritablePath) {
   const PlotSpec spec = exampleSpec();
-  const std::string path = (std::filesystem::path(testing::TempDir()) / "viz-plot.png").string();
+  const std::string path = (std::filesystem::path(::testing::TempDir()) / "viz-plot.png").string();
   writePlotPng(path, spec);
   EXPECT_EQ(Image::loadPng(path).pixels(), renderPlot(spec).pixels());
   try {

@@ -1,0 +1,29 @@
+#pragma once
+// Setting up a simulation for a command, with the commands' error convention: one line on
+// stderr naming the scenario, exit 2 for parameters the model rejects, 1 for anything else.
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "cardiac/heart_simulation.h"
+#include "exit_codes.h"
+
+namespace hs::app {
+
+// The simulation, or nullptr after printing the error; exitCode then holds the exit code.
+inline std::unique_ptr<cardiac::HeartSimulation> makeSimulation(const cardiac::Scenario& scenario, int threads,
+                                                                const std::string& source, int& exitCode) {
+  try {
+    return std::make_unique<cardiac::HeartSimulation>(scenario, threads);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "heartsim: error: " << source << ": " << e.what() << '\n';
+    exitCode = kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "heartsim: error: " << source << ": could not set up the simulation: " << e.what() << '\n';
+    exitCode = kExitFailure;
+  }
+  return nullptr;
+}
+
+}  // namespace hs::app
