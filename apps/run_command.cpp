@@ -142,13 +142,9 @@ io::VtuFrame bloodFrame(const cardiac::HeartSimulation& sim) {
 
 int runCommand(const RunOptions& options) {
   const auto setupStart = Clock::now();
-  cardiac::Scenario scenario;
-  try {
-    scenario = io::loadScenario(options.scenario, options.overrides);
-  } catch (const io::ScenarioError& e) {
-    std::cerr << "heartsim: error: " << e.what() << '\n';
-    return kExitBadInput;
-  }
+  std::optional<cardiac::Scenario> loaded = loadScenarioOrReport(options.scenario, options.overrides);
+  if (!loaded) return kExitBadInput;
+  cardiac::Scenario scenario = *loaded;
   if (options.duration) {
     if (!std::isfinite(*options.duration) || *options.duration < 0) {
       std::cerr << "heartsim: error: --duration: must be a finite number >= 0 (s), got "

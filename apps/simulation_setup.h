@@ -6,10 +6,25 @@
 #include <optional>
 #include <string>
 
+#include <vector>
+
 #include "cardiac/heart_simulation.h"
 #include "exit_codes.h"
+#include "io/scenario_file.h"
 
 namespace hs::app {
+
+// The scenario (a built-in name or a .toml path, with --set overrides), or nullopt after
+// printing the scenario reader's one-line error (the caller exits with kExitBadInput).
+inline std::optional<cardiac::Scenario> loadScenarioOrReport(const std::string& nameOrPath,
+                                                             const std::vector<std::string>& overrides) {
+  try {
+    return io::loadScenario(nameOrPath, overrides);
+  } catch (const io::ScenarioError& e) {
+    std::cerr << "heartsim: error: " << e.what() << '\n';
+    return std::nullopt;
+  }
+}
 
 // The simulation, or nullptr after printing the error; exitCode then holds the exit code.
 inline std::unique_ptr<cardiac::HeartSimulation> makeSimulation(const cardiac::Scenario& scenario, int threads,

@@ -124,13 +124,9 @@ nlohmann::ordered_json pointsJson(const std::vector<PointComparison>& points) {
 }  // namespace
 
 int validateDamBreakCommand(const ValidateOptions& options) {
-  cardiac::Scenario scenario;
-  try {
-    scenario = io::loadScenario(options.scenario, options.overrides);
-  } catch (const io::ScenarioError& e) {
-    std::cerr << "heartsim: error: " << e.what() << '\n';
-    return kExitBadInput;
-  }
+  std::optional<cardiac::Scenario> loaded = loadScenarioOrReport(options.scenario, options.overrides);
+  if (!loaded) return kExitBadInput;
+  cardiac::Scenario scenario = *loaded;
   Geometry geo;
   if (const std::string problem = checkGeometry(scenario, geo); !problem.empty()) {
     std::cerr << "heartsim: error: " << options.scenario << ": " << problem << '\n';
