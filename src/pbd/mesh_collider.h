@@ -66,6 +66,9 @@ struct TriangleGrid {
 
 }  // namespace detail
 
+// The point of triangle abc closest to p.
+Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+
 class StaticMeshCollider {
  public:
   // Triangles index `vertices`. Throws std::invalid_argument (one line naming the triangle or

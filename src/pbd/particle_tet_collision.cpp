@@ -1,0 +1,134 @@
+// Particles against a moving tetrahedral solid, see particle_tet_collision.h.
+#include "pbd/particle_tet_collision.h"
+
+#include <algorithm>
+#include <limits>
+#include <utility>
+
+#include "pbd/mesh_collider.h"
+#include "pbd/tet_geometry.h"
+
+namespace hs::pbd {
+namespace {
+
+// Below this many particles a fork-join costs more than the loop saves.
+constexpr std::ptrdiff_t kParallelThreshold = 256;
+
+std::vector<Tet> shifted(std::vector<Tet> tets, Index offset) {
+  for (Tet& t : tets)
+    for (Index& v : t) v += offset;
+  return tets;
+}
+
+}  // namespace
+
+ParticleTetCollider::ParticleTetCollider(std::vector<Tet> tets, Index firstVertex)
+    : m_tets(shifted(std::move(tets), firstVertex)),
+      m_exitFaces(tetBoundaryFaceMasks(m_tets)),
+      m_boundary(boundaryFaces(m_tets)) {}
+
+// Last resort for a particle no tet-by-tet push could free: the closest point q of the
+// boundary surface, and p* = q + radius n with n that face's outward normal. Brute force over
+// the boundary: it runs only for such particles (none in the tests' LV runs).
+Vec3 ParticleTetCollider::nearestBoundaryExit(const std::vector<Vec3>& x, const Vec3& p, Real radius) const {
+  Real best = std::numeric_limits<Real>::infinity();
+  Vec3 result = p;
+  for (const Triangle& f : m_boundary) {
+    const Vec3 q = closestPointOnTriangle(p, x[f[0]], x[f[1]], x[f[2]]);
+    const Real d2 = (q - p).squaredNorm();
+    if (!(d2 < best)) continue;
+    const Vec3 n = (x[f[1]] - x[f[0]]).cross(x[f[2]] - x[f[0]]);
+    const Real len = n.norm();
+    if (!(len > Real(0))) continue;
+    best = d2;
+    result = q + (radius / len) * n;
+  }
+  return result;
+}
+
+void ParticleTetCollider::rebuild(const std::vector<Vec3>& positions, Real padding) {
+  // Points on a shared face count as inside both tets (kBarycentricSlack), so the boxes are
+  // padded by a hair to keep such points among the candidates.
+  TetGridSettings grid = m_grid.settings();
+  grid.padding = padding;
+  m_grid.setSettings(grid);
+  m_grid.build(positions, m_tets);
+}
+
+std::size_t ParticleTetCollider::resolve(Particles& particles, Index first, Index end,
+                                         const ParticleTetSettings& settings) {
+  std::vector<Vec3>& p = particles.predicted;
+  rebuild(p, Real(1e-3) * settings.radius);
+  const std::ptrdiff_t count = std::ptrdiff_t(end) - std::ptrdiff_t(first);
+  std::size_t moved = 0;
+#pragma omp parallel for schedule(static) num_threads(settings.threads) reduction(+ : moved) \
+    if (count >= kParallelThreshold)
+  for (std::ptrdiff_t s = 0; s < count; ++s) {
+    const Index i = first + Index(s);
+    if (particles.inverseMass[i] <= Real(0)) continue;
+    Vec3 x = p[i];
+    const Vec3& previous = particles.position[i];
+    bool changed = false;
+    // While walking back along the ray through interior faces, the entry point of the last tet
+    // and the ray's unit direction: the particle must end `radius` beyond the entry into the
+    // solid, not into one of its inner tets.
+    bool walking = false;
+    Vec3 entry = Vec3::Zero(), ray = Vec3::Zero();
+    for (int pass = 0; pass < settings.maxPasses; ++pass) {
+      // The lowest-numbered tet holding the particle (deterministic), then push out of it.
+      int hit = -1;
+      m_grid.forEachCandidate(x, [&](Index t) {
+        if (hit < 0 && isPointInTet(tetPoints(p, m_tets[t]), x, kBarycentricSlack)) hit = int(t);
+      });
+      if (hit < 0) break;
+      const auto t = std::size_t(hit);
+      const TetPushOut out = pushOutOfTet(tetPoints(p, m_tets[t]), x, previous, settings.radius, m_exitFaces[t]);
+      if (out.face < 0) break;  // degenerate tet: nothing it can say
+      changed = true;
+      walking = false;
+      x = out.position;
+      if (out.alongRay && !(m_exitFaces[t] & (1u << out.face))) {
+        // Entered through an inner face: step just across it into the tet the ray came from
+        // and push again from there (eq. 4.20 measured from the solid's surface).
+        ray = (p[i] - previous).normalized();
+        entry = out.position + settings.radius * ray;
+        x = entry - (Real(1e-3) * settings.radius) * ray;
+        walking = true;
+      }
+      if (pass + 1 == settings.maxPasses) {
+        x = nearestBoundaryExit(p, x, settings.radius);
+        walking = false;
+      }
+    }
+    // The step across an inner face found no tet (the faces did not quite meet): finish the
+    // push from the last entry.
+    if (walking) x = entry - settings.radius * ray;
+    if (changed) {
+      p[i] = x;
+      ++moved;
+    }
+  }
+  return moved;
+}
+
+std::size_t ParticleTetCollider::countInside(const std::vector<Vec3>& positions, Index first, Index end,
+                                             Real minDepth, int threads) {
+  rebuild(positions, std::max(minDepth, Real(0)));
+  const std::ptrdiff_t count = std::ptrdiff_t(end) - std::ptrdiff_t(first);
+  std::size_t inside = 0;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(+ : inside) \
+    if (count >= kParallelThreshold)
+  for (std::ptrdiff_t s = 0; s < count; ++s) {
+    const Vec3& x = positions[first + Index(s)];
+    bool deep = false;
+    m_grid.forEachCandidate(x, [&](Index t) {
+      if (deep) return;
+      const TetPointQuery q = queryPointInTet(tetPoints(positions, m_tets[t]), x);
+      deep = q.inside && q.depth > minDepth;
+    });
+    if (deep) ++inside;
+  }
+  return inside;
+}
+
+}  // namespace hs::pbd

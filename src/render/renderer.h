@@ -1,0 +1,119 @@
+#pragma once
+// The scene renderer shared by `heartsim render` (offscreen) and the viewer: a lit, optionally
+// see-through or cut-open heart wall, blood particles as shaded spheres, a wireframe box, over
+// a gradient background. The scene is plain data (scene.h builds it from a simulation), so the
+// renderer knows nothing about hearts.
+//
+// World coordinates are the model's (metres): y is the long axis (apex at -y, vessels at +y),
+// anterior is +z, the mitral orifice at -x. The four named views follow the thesis's figures.
+#include <Eigen/Core>
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hs::render {
+
+using Vec3f = Eigen::Vector3f;
+using Vec4f = Eigen::Vector4f;
+using Mat4f = Eigen::Matrix4f;
+
+struct Box {
+  Vec3f min = Vec3f::Zero(), max = Vec3f::Zero();
+  Vec3f centre() const { return (min + max) / 2; }
+};
+
+// A perspective look-at camera.
+struct Camera {
+  Vec3f eye = Vec3f(0, 0, 1), target = Vec3f::Zero(), up = Vec3f(0, 1, 0);
+  float fovyDegrees = 30;
+  float nearPlane = 0.01f, farPlane = 100;
+
+  Mat4f viewMatrix() const;
+  Mat4f projectionMatrix(float aspect) const;
+  // Where a world point lands in a width x height image: x to the right, y downwards
+  // (pixels, continuous), z the depth in [0, 1] (OpenGL's window depth).
+  Vec3f project(const Vec3f& world, int width, int height) const;
+};
+
+// front: anterior view, looking along -z (the mitral side, -x, on the viewer's left);
+// left / right: from -x / +x looking along +x / -x; top: from +y down onto the base, -x on the
+// viewer's left and anterior (+z) at the bottom of the image. Up is +y except for top.
+enum class View { Front, Left, Right, Top };
+inline constexpr std::array<View, 4> kAllViews = {View::Front, View::Left, View::Right, View::Top};
+const char* viewName(View view);
+std::optional<View> parseView(std::string_view name);
+// "front, left, right, top"
+std::string viewNames();
+
+// The camera looking at `bounds` from the named side, far enough that the whole box fits an
+// image of the given aspect ratio (width / height) with a small margin.
+Camera viewCamera(View view, const Box& bounds, float aspect);
+
+// Triangles as consecutive vertex triples (not indexed: creases get their own normals).
+// Front faces (counter-clockwise seen from outside) are the wall's outside; back faces are
+// only seen where the clipping plane cuts the wall open and are drawn in cutColour.
+struct WallMesh {
+  std::vector<Vec3f> positions, normals, colours;  // per vertex, colours linear RGB in [0, 1]
+  float opacity = 1;                             // < 1: see-through
+  Vec3f cutColour = Vec3f(0.55f, 0.16f, 0.18f);
+  std::size_t triangleCount() const { return positions.size() / 3; }
+};
+
+struct ParticleCloud {
+  std::vector<Vec3f> centres, colours;
+  float radius = 0.01f;
+};
+
+// Line segments as point pairs.
+struct LineSet {
+  std::vector<Vec3f> points;
+  Vec3f colour = Vec3f(0.35f, 0.4f, 0.5f);
+};
+
+// Removes what lies on the side the normal points to: dot(normal, x) + offset > 0.
+struct ClipPlane {
+  bool enabled = false;
+  Vec3f normal = Vec3f(0, 0, 1);
+  float offset = 0;
+  bool clipParticles = false;  // the wall is always clipped; particles only when asked
+};
+
+// Directional lights fixed to the camera (view space, pointing toward the light), so every
+// view is lit the same way: a key light from the upper left, a weaker fill from the right.
+struct Light {
+  Vec3f key = Vec3f(-0.4f, 0.6f, 0.7f);
+  Vec3f fill = Vec3f(0.6f, -0.1f, 0.5f);
+  float ambient = 0.28f, keyStrength = 0.75f, fillStrength = 0.25f;
+  float specular = 0.35f, shininess = 40;
+};
+
+struct Scene {
+  WallMesh wall;
+  ParticleCloud particles;
+  LineSet lines;
+  ClipPlane clip;
+  Light light;
+  Vec3f backgroundTop = Vec3f(0.97f, 0.97f, 0.99f), backgroundBottom = Vec3f(0.78f, 0.82f, 0.89f);
+  Box bounds;  // what the cameras frame
+};
+
+// Draws into the currently bound framebuffer (FrameTarget::bind). Needs a current OpenGL 3.3
+// core context (GlContext) for its whole life; throws std::runtime_error when a shader does not
+// compile.
+class Renderer {
+ public:
+  Renderer();
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  void draw(const Scene& scene, const Camera& camera, int width, int height);
+
+ private:
+  struct Gl;
+  std::unique_ptr<Gl> m_gl;
+};
+
+}  // namespace hs::render
