@@ -1,9 +1,10 @@
-// heartsim: the command-line entry point. Subcommands: run, bench, validate.
+// heartsim: the command-line entry point. Subcommands: run, render, bench, validate.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
 #include "bench_command.h"
 #include "exit_codes.h"
+#include "render_command.h"
 #include "run_command.h"
 #include "validate_command.h"
 #include "version.h"
@@ -24,6 +25,24 @@ int main(int argc, char** argv) {
   runApp->add_flag("--json", run.json, "Print one JSON summary object on stdout");
   runApp->add_flag("--vtk", run.vtk, "Write VTK frames and a .pvd series for ParaView");
   runApp->add_option("--set", run.overrides, "Override a scenario key: --set cycle.beats=2 (repeatable)")
+      ->take_all()
+      ->expected(1);
+
+  RenderOptions render;
+  bool renderClip = true;
+  CLI::App* renderApp = app.add_subcommand("render", "Run a scenario headless and draw it offscreen as PNG images");
+  renderApp->add_option("scenario", render.scenario, "Built-in scenario name or path to a .toml file")->required();
+  renderApp->add_option("--times", render.times, "Comma list of times (s) to draw, e.g. 0,0.08,1,2 (default: 0 and the end)");
+  renderApp->add_option("--views", render.views, "Comma list of views: front, left, right, top")->capture_default_str();
+  renderApp->add_option("--out", render.outDir, "Output directory (default: results/<scenario>/render)");
+  renderApp->add_option("--size", render.size, "Size of each view, WIDTHxHEIGHT pixels")->capture_default_str();
+  renderApp->add_flag("--clip,!--no-clip", renderClip, "Cut the wall open at z = --clip-z (default: on with a heart)");
+  renderApp->add_option("--clip-z", render.clipZ, "Position of the cutting plane z = const (m)")->capture_default_str();
+  renderApp->add_option("--wall-opacity", render.wallOpacity, "Wall opacity in (0, 1]; below 1 the wall is see-through")
+      ->capture_default_str();
+  renderApp->add_option("--speed-max", render.speedMax, "Blood speed (m/s) at the top of the colour scale (0: from the scenario)");
+  renderApp->add_option("--threads", render.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  renderApp->add_option("--set", render.overrides, "Override a scenario key: --set cycle.beats=2 (repeatable)")
       ->take_all()
       ->expected(1);
 
@@ -65,6 +84,10 @@ int main(int argc, char** argv) {
     if (runApp->parsed()) {
       if (runApp->count("--duration") > 0) run.duration = duration;
       return runCommand(run);
+    }
+    if (renderApp->parsed()) {
+      if (renderApp->count("--clip") + renderApp->count("--no-clip") > 0) render.clip = renderClip;
+      return renderCommand(render);
     }
     if (benchApp->parsed()) return benchCommand(bench);
     if (damBreakApp->parsed()) return validateDamBreakCommand(validate);

@@ -84,6 +84,7 @@ struct RunStatistics {
   double cavityMax = -INFINITY;
   // Blood: the density error over the last simulated second (issue: "over the last second").
   std::size_t bloodLostMax = 0;
+  std::size_t bloodInsideWallMax = 0;
   double bloodSpeedMax = 0;
   double lastSecondFrom = 0;      // steps ending after this time count
   double densityErrorMeanSum = 0;
@@ -175,7 +176,8 @@ int runCommand(const RunOptions& options) {
   csv << "step,time_s,phase";
   if (sim.hasHeart())
     csv << ",cavity_volume_m3,cavity_volume_ml,volume_error_mean,volume_error_max,inverted_tets,rest_deviation_rel";
-  if (sim.hasBlood()) csv << ",blood_lost,blood_density_error_mean,blood_density_error_max,blood_max_speed_m_s";
+  if (sim.hasBlood())
+    csv << ",blood_lost,blood_density_error_mean,blood_density_error_max,blood_max_speed_m_s,blood_inside_wall";
   csv << '\n';
   csv.precision(9);
 
@@ -238,6 +240,7 @@ int runCommand(const RunOptions& options) {
       if (sim.hasBlood()) {
         const cardiac::BloodStats blood = sim.bloodStats();
         stats.bloodLostMax = std::max(stats.bloodLostMax, blood.lost);
+        stats.bloodInsideWallMax = std::max(stats.bloodInsideWallMax, blood.insideWall);
         stats.bloodSpeedMax = std::max(stats.bloodSpeedMax, blood.maxSpeed);
         if (sim.time() > stats.lastSecondFrom) {
           stats.densityErrorMeanSum += blood.densityErrorMean;
@@ -245,7 +248,7 @@ int runCommand(const RunOptions& options) {
           ++stats.lastSecondSteps;
         }
         csv << ',' << blood.lost << ',' << blood.densityErrorMean << ',' << blood.densityErrorMax << ','
-            << blood.maxSpeed;
+            << blood.maxSpeed << ',' << blood.insideWall;
       }
       csv << '\n';
       if (vtk && (s + 1) % scenario.output.vtkEvery == 0) writeFrame(s + 1);
@@ -281,6 +284,7 @@ int runCommand(const RunOptions& options) {
     report["blood"] = {
         {"particles", blood.particles},
         {"lost", std::max(stats.bloodLostMax, blood.lost)},
+        {"inside_wall", std::max(stats.bloodInsideWallMax, blood.insideWall)},
         {"density_error_mean", lastSecondMean},
         {"density_error_max", stats.lastSecondSteps > 0 ? stats.densityErrorMax : blood.densityErrorMax},
         {"full_neighbourhood", blood.fullNeighbourhood},

@@ -40,6 +40,21 @@ std::shared_ptr<const pbd::StaticMeshCollider> boxMesh(const Vec3& lower, const 
   return std::make_shared<const pbd::StaticMeshCollider>(std::move(v), t, cellSize);
 }
 
+// Lattice sites of the LV cavity: the half prolate spheroid of the endocardium (lv_model.h,
+// y <= 0) shrunk by one spacing, so that no particle starts in the wall (the mesh's flat
+// triangles lie inside the smooth surface by less than that).
+std::vector<Vec3> chamberLattice(const Scenario& scenario) {
+  const Real d = scenario.blood.spacing;
+  const Real a = scenario.geometry.endoRadius - d, c = scenario.geometry.endoLongAxis - d;
+  std::vector<Vec3> x;
+  if (!(a > 0 && c > 0)) return x;
+  for (const Vec3& p : pbd::fluidBlock(Vec3(-a, -c, -a), Vec3(a, -d, a), d)) {
+    const Real e = (p.x() / a) * (p.x() / a) + (p.y() / c) * (p.y() / c) + (p.z() / a) * (p.z() / a);
+    if (e <= 1) x.push_back(p);
+  }
+  return x;
+}
+
 double physicalMemoryBytes() {
   const long pages = sysconf(_SC_PHYS_PAGES);
   const long size = sysconf(_SC_PAGE_SIZE);
@@ -98,9 +113,16 @@ std::size_t bloodBytesPerParticle(std::size_t neighbours) {
 
 std::vector<Vec3> bloodStartPositions(const Scenario& scenario) {
   const BloodSettings& b = scenario.blood;
+  if (b.start == BloodSettings::Start::Chamber && !scenario.heart)
+    throw std::invalid_argument("blood.start: \"chamber\" needs a heart (model.enabled = true); use \"block\"");
   // Count the sites before making any: a tiny spacing must fail here, not in the allocator.
   double sites = 1;
-  for (int a = 0; a < 3; ++a) sites *= std::floor(double(b.blockMax[a] - b.blockMin[a]) / double(b.spacing) + 1e-4);
+  if (b.start == BloodSettings::Start::Chamber) {  // the cavity's bounding box, an upper bound
+    const double a = 2 * double(scenario.geometry.endoRadius) / double(b.spacing);
+    sites = a * a * double(scenario.geometry.endoLongAxis) / double(b.spacing);
+  } else {
+    for (int a = 0; a < 3; ++a) sites *= std::floor(double(b.blockMax[a] - b.blockMin[a]) / double(b.spacing) + 1e-4);
+  }
   const double wanted = b.particles > 0 ? double(b.particles) : sites;
   const double neighbours = double(pbd::latticeNeighbourCount(b.supportRadius, b.spacing));
   const double bytes = wanted * double(bloodBytesPerParticle(std::size_t(std::min(neighbours, 1e6))));
@@ -110,19 +132,24 @@ std::vector<Vec3> bloodStartPositions(const Scenario& scenario) {
                                 str(neighbours) + " neighbours each) need about " + str(bytes / 1e9) +
                                 " GB, more than 80% of this machine's " + str(memory / 1e9) +
                                 " GB; lower blood.particles or raise blood.spacing");
-  if (b.particles > 0 && sites < wanted)
+  if (b.start == BloodSettings::Start::Block && b.particles > 0 && sites < wanted)
     throw std::invalid_argument("blood.particles: the start block " + vec(b.blockMin) + " - " + vec(b.blockMax) +
                                 " m holds " + str(sites) + " particles at spacing " + str(b.spacing) +
                                 " m, expected at least " + str(wanted) + "; enlarge blood.block_max");
-  if (scenario.container.enabled) {
+  if (scenario.container.enabled && b.start == BloodSettings::Start::Block) {
     const auto& c = scenario.container;
     for (int a = 0; a < 3; ++a)
       if (b.blockMin[a] < c.min[a] || b.blockMax[a] > c.max[a])
         throw std::invalid_argument("blood.block_min: the start block " + vec(b.blockMin) + " - " + vec(b.blockMax) +
                                     " m must lie inside the container " + vec(c.min) + " - " + vec(c.max) + " m");
   }
-  std::vector<Vec3> x = pbd::fluidBlock(b.blockMin, b.blockMax, b.spacing);
+  std::vector<Vec3> x = b.start == BloodSettings::Start::Chamber ? chamberLattice(scenario)
+                                                                 : pbd::fluidBlock(b.blockMin, b.blockMax, b.spacing);
   if (b.particles > 0) {
+    if (x.size() < std::size_t(b.particles))
+      throw std::invalid_argument("blood.particles: the chamber holds " + str(double(x.size())) +
+                                  " particles at spacing " + str(b.spacing) + " m, expected at least " +
+                                  str(double(b.particles)) + "; lower blood.particles or blood.spacing");
     // Lowest layers first, so a partial fill is a pool at the bottom of the block.
     std::stable_sort(x.begin(), x.end(), [](const Vec3& p, const Vec3& q) { return p.y() < q.y(); });
     x.resize(std::size_t(b.particles));
@@ -130,7 +157,8 @@ std::vector<Vec3> bloodStartPositions(const Scenario& scenario) {
   return x;
 }
 
-BloodStats measureBlood(const Scenario& scenario, const pbd::Particles& particles, int threads) {
+BloodStats measureBlood(const Scenario& scenario, const pbd::Particles& particles, const Vec3& domainMin,
+                        const Vec3& domainMax, int threads) {
   const BloodSettings& b = scenario.blood;
   BloodStats stats;
   pbd::FluidSettings fluid;
@@ -144,13 +172,11 @@ BloodStats measureBlood(const Scenario& scenario, const pbd::Particles& particle
   stats.fullNeighbourhood = f.fullCount;
   stats.maxSpeed = double(f.maxSpeed);
   stats.meanNeighbours = double(f.meanNeighbours);
-  const auto& c = scenario.container;
   for (std::size_t i = 0; i < particles.size(); ++i) {
     if (particles.kind[i] != pbd::ParticleKind::Fluid) continue;
     const Vec3& x = particles.position[i];
     bool out = !x.allFinite() || !particles.velocity[i].allFinite();
-    if (!out && c.enabled)
-      for (int a = 0; a < 3; ++a) out = out || x[a] < c.min[a] - b.radius || x[a] > c.max[a] + b.radius;
+    for (int a = 0; a < 3 && !out; ++a) out = x[a] < domainMin[a] || x[a] > domainMax[a];
     if (out) ++stats.lost;
   }
   return stats;

@@ -11,6 +11,8 @@
 
 namespace hs::cardiac {
 
+using pbd::Vec3;
+
 // Solver settings for the scenario's blood (thesis 4.2 with the constants of Table 5.2):
 //   m = rho0 d^3 (one particle per lattice cell at rest, docs/thesis-deviations.md),
 //   XSPH c = gamma m / rho0 (thesis eq. 4.11), nu = mu / rho0,
@@ -32,7 +34,7 @@ std::size_t bloodBytesPerParticle(std::size_t neighbours);
 
 struct BloodStats {
   std::size_t particles = 0;
-  // Particles outside the domain (the container, grown by one radius) or non-finite.
+  // Particles outside the domain (the container or the heart's surroundings) or non-finite.
   std::size_t lost = 0;
   // |rho/rho0 - 1| over particles with a full neighbourhood (pbd::measureFluid).
   double densityErrorMean = 0;
@@ -40,8 +42,12 @@ struct BloodStats {
   std::size_t fullNeighbourhood = 0;
   double maxSpeed = 0;  // m/s over all blood particles
   double meanNeighbours = 0;  // neighbours within the support radius per particle
+  // Particles whose centre is more than 1% of their radius inside a wall tetrahedron.
+  std::size_t insideWall = 0;
 };
 
-BloodStats measureBlood(const Scenario& scenario, const pbd::Particles& particles, int threads);
+// `domainMin`/`domainMax`: particles outside this box count as lost.
+BloodStats measureBlood(const Scenario& scenario, const pbd::Particles& particles, const Vec3& domainMin,
+                        const Vec3& domainMax, int threads);
 
 }  // namespace hs::cardiac

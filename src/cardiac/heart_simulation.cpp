@@ -2,6 +2,7 @@
 
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "pbd/soft_body.h"
@@ -37,10 +38,6 @@ Index buildWall(const Scenario& scenario, const LvModel& model, pbd::Particles& 
 
 HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
     : m_scenario(scenario), m_threads(threads) {
-  if (scenario.heart && scenario.blood.enabled)
-    throw std::invalid_argument(
-        "blood.enabled: blood inside the heart needs the heart-blood coupling, which this version does not "
-        "have yet; set model.enabled = false to simulate blood in a container");
   if (!scenario.heart && !scenario.blood.enabled)
     throw std::invalid_argument("model.enabled: with no heart and no blood (blood.enabled = false) there is "
                                 "nothing to simulate");
@@ -63,6 +60,25 @@ HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
     }
   }
   m_firstBloodParticle = Index(m_particles.size());
+  // Blood beyond this box is lost: the container, or the heart's rest bounding box grown by
+  // a quarter of its long axis (blood that left through a vessel's open end).
+  if (scenario.container.enabled) {
+    const Vec3 r = Vec3::Constant(scenario.blood.radius);
+    m_domainMin = scenario.container.min - r;
+    m_domainMax = scenario.container.max + r;
+  } else if (m_model) {
+    m_domainMin = m_domainMax = m_model->mesh.vertices.front();
+    for (const Vec3& v : m_model->mesh.vertices) {
+      m_domainMin = m_domainMin.cwiseMin(v);
+      m_domainMax = m_domainMax.cwiseMax(v);
+    }
+    const Vec3 grow = Vec3::Constant(Real(0.25) * m_model->longAxisLength);
+    m_domainMin -= grow;
+    m_domainMax += grow;
+  } else {
+    m_domainMin = Vec3::Constant(-std::numeric_limits<Real>::max());
+    m_domainMax = Vec3::Constant(std::numeric_limits<Real>::max());
+  }
   if (scenario.blood.enabled) {
     // The start block first: it checks the particle count against memory before anything
     // else is allocated; then the solver settings check the remaining parameters.
@@ -70,6 +86,7 @@ HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
     m_fluid = std::make_unique<pbd::FluidSolver>(bloodSolverSettings(scenario, threads));
     const Real inverseMass = Real(1) / m_fluid->settings().fluid.particleMass;
     for (const pbd::Vec3& x : start) m_particles.add(x, inverseMass, pbd::ParticleKind::Fluid);
+    if (m_model) m_wallContact = std::make_unique<pbd::ParticleTetCollider>(m_model->mesh.tets, m_firstWallParticle);
     m_bloodIds.resize(m_particles.size() - m_firstBloodParticle);
     for (std::size_t k = 0; k < m_bloodIds.size(); ++k) m_bloodIds[k] = Index(k);
     reorderBlood();
@@ -94,12 +111,26 @@ void HeartSimulation::step() {
     if (m_cycle) m_cycle->apply(p.position, p.predicted);
     if (m_fluid) m_fluid->projectDensity(p);
   };
+  if (m_wallContact) {
+    hooks.afterProjection = [this](pbd::Particles& p) {
+      pbd::ParticleTetSettings contact;
+      contact.radius = m_scenario.blood.radius;
+      contact.threads = m_threads;
+      m_wallContact->resolve(p, m_firstBloodParticle, Index(p.size()), contact);
+    };
+  }
   if (m_fluid) hooks.postProcessVelocities = [this](pbd::Particles& p) { m_fluid->postProcessVelocities(p); };
   pbd::step(m_constraints, m_particles, m_solver, hooks);
   ++m_steps;
 }
 
-BloodStats HeartSimulation::bloodStats() const { return measureBlood(m_scenario, m_particles, m_threads); }
+BloodStats HeartSimulation::bloodStats() const {
+  BloodStats stats = measureBlood(m_scenario, m_particles, m_domainMin, m_domainMax, m_threads);
+  if (m_wallContact)
+    stats.insideWall = m_wallContact->countInside(m_particles.position, m_firstBloodParticle, Index(m_particles.size()),
+                                                  Real(0.01) * m_scenario.blood.radius, m_threads);
+  return stats;
+}
 
 Real HeartSimulation::cavityVolume() const {
   // Model vertex v is particle m_firstWallParticle + v; the wall is the first body, so the

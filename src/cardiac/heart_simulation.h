@@ -5,7 +5,9 @@
 // cycle moves the beating vertices and the blood's density constraints are solved, then the
 // wall's constraints are projected, then velocities are updated and the blood's are
 // post-processed (viscosity). The wall particles come first (particle = model vertex), then
-// the blood. Heart-blood coupling is not part of this version: a scenario has either.
+// the blood. With both, blood that the moving wall has swept over is pushed back out of the
+// wall's tetrahedra after the wall's constraints (thesis 4.4, one-way: the wall does not feel
+// the blood yet).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -16,6 +18,7 @@
 #include "cardiac/lv_model.h"
 #include "cardiac/scenario.h"
 #include "pbd/fluid_solver.h"
+#include "pbd/particle_tet_collision.h"
 #include "pbd/solver.h"
 
 namespace hs::cardiac {
@@ -73,6 +76,8 @@ class HeartSimulation {
   Index m_firstBloodParticle = 0;
   std::optional<CardiacCycle> m_cycle;
   std::unique_ptr<pbd::FluidSolver> m_fluid;
+  std::unique_ptr<pbd::ParticleTetCollider> m_wallContact;  // heart and blood
+  Vec3 m_domainMin = Vec3::Zero(), m_domainMax = Vec3::Zero();  // outside: blood is lost
   std::vector<Index> m_bloodIds;
   void reorderBlood();
   std::vector<Real> m_restVolume;  // per model tet

@@ -95,6 +95,9 @@ struct BloodSettings {
   int tensileN = 4;
   Real tensileDeltaQ = Real(0.2);   // deltaQ / h
   Real vorticity = 0;               // m/s, PBF eq. 16 epsilon; 0 = off
+  // Where the particles start: a lattice block (blockMin..blockMax), or the heart's chamber
+  // (the LV cavity, at least one spacing from its wall).
+  enum class Start { Block, Chamber } start = Start::Block;
   Vec3 blockMin = Vec3(Real(-0.8), Real(-2.4), Real(-0.8));  // m, the block the particles start in
   Vec3 blockMax = Vec3(Real(0.8), Real(-0.8), Real(0.8));
 };

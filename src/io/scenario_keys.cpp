@@ -30,6 +30,8 @@ std::vector<KeySpec> buildKeyTable() {
       {"normal", BeatPattern::Normal},
       {"irregular", BeatPattern::Irregular},
       {"inconsistent", BeatPattern::Inconsistent}};
+  const std::vector<std::pair<std::string, cardiac::BloodSettings::Start>> starts = {
+      {"block", cardiac::BloodSettings::Start::Block}, {"chamber", cardiac::BloodSettings::Start::Chamber}};
   const char* m = "m";
   return {
       // [scenario]
@@ -157,6 +159,8 @@ std::vector<KeySpec> buildKeyTable() {
               "s_corr reference distance, as a fraction of the support radius (PBF: 0.1-0.3)."),
       realKey("blood.vorticity", HS_FIELD(blood.vorticity), between(0, 1000), "m/s",
               "Vorticity confinement epsilon (PBF eq. 16); 0 = off."),
+      choiceKey("blood.start", HS_FIELD(blood.start), starts,
+                "Where the blood starts: \"block\" (block_min..block_max) or \"chamber\" (the LV cavity)."),
       vec3Key("blood.block_min", HS_FIELD(blood.blockMin), m, "Lower corner of the block the blood starts in."),
       vec3Key("blood.block_max", HS_FIELD(blood.blockMax), m, "Upper corner of that block."),
       // [container]

@@ -168,6 +168,7 @@ void step(ConstraintSet& constraints, Particles& particles, const SolverSettings
   predictPositions(particles, settings);
   if (hooks.afterPrediction) hooks.afterPrediction(particles);
   projectConstraints(constraints, particles, settings);
+  if (hooks.afterProjection) hooks.afterProjection(particles);
   updateVelocities(particles, settings);
   if (hooks.postProcessVelocities) hooks.postProcessVelocities(particles);
 }

@@ -55,6 +55,9 @@ void updateVelocities(Particles& particles, const SolverSettings& settings);
 // line 15: velocity post-processing such as XSPH viscosity, thesis eq. 4.11). Empty: skipped.
 struct StepHooks {
   std::function<void(Particles&)> afterPrediction;
+  // After the constraints, before the velocity update: contacts between bodies that must see
+  // where the constraints put them (blood pushed out of the wall, thesis 4.4).
+  std::function<void(Particles&)> afterProjection;
   std::function<void(Particles&)> postProcessVelocities;
 };
 

@@ -8,6 +8,7 @@
 // anterior is +z, the mitral orifice at -x. The four named views follow the thesis's figures.
 #include <Eigen/Core>
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -46,6 +47,9 @@ const char* viewName(View view);
 std::optional<View> parseView(std::string_view name);
 // "front, left, right, top"
 std::string viewNames();
+
+// Unit vector from the scene toward the eye of a view: front +z, left -x, right +x, top +y.
+Vec3f viewDirection(View view);
 
 // The camera looking at `bounds` from the named side, far enough that the whole box fits an
 // image of the given aspect ratio (width / height) with a small margin.

@@ -92,7 +92,8 @@ TEST(CliBlood, BadFluidParametersExitTwoNamingTheKey) {
   expectBadFluidInput("run fluid-at-rest --set blood.particle_collision=true --set blood.radius=0.004",
                       {"blood.radius", "spacing"});
   expectBadFluidInput("run fluid-at-rest --set container.max=[0.04,0.12,0.05]", {"block_min", "container"});
-  expectBadFluidInput("run heart-only --set blood.enabled=true", {"blood.enabled", "coupling"});
+  expectBadFluidInput("run heart-only --set blood.enabled=true --set blood.start=chamber --set blood.particles=100000",
+                      {"blood.particles", "chamber holds"});
 }
 
 }  // namespace

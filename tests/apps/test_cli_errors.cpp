@@ -81,9 +81,9 @@ TEST(CliErrors, TooManyStepsIsBadInput) {
                  {"simulation.duration", "steps"});
 }
 
-TEST(CliErrors, BloodIsNotSilentlyIgnored) {
+TEST(CliErrors, BloodInAChamberNeedsAHeart) {
   const auto dir = scratchDir("blood");
-  expectBadInput(runHeartsim("run heart-only --set blood.enabled=true --json", dir), {"blood.enabled"});
+  expectBadInput(runHeartsim("run fluid-at-rest --set blood.start=chamber --json", dir), {"blood.start", "heart"});
 }
 
 // A wall pushed 3 m per step folds at once: exit 3, one line saying when and where.

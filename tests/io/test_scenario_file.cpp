@@ -243,6 +243,8 @@ std::vector<KeyCase> everyKeyCase() {
       {"blood.tensile_n", "3", [](const Scenario& s) { return s.blood.tensileN == 3; }},
       {"blood.tensile_dq", "0.3", [](const Scenario& s) { return s.blood.tensileDeltaQ == Real(0.3); }},
       {"blood.vorticity", "0.01", [](const Scenario& s) { return s.blood.vorticity == Real(0.01); }},
+      {"blood.start", "chamber",
+       [](const Scenario& s) { return s.blood.start == cardiac::BloodSettings::Start::Chamber; }},
       {"blood.block_min", "[-1.0, -3.0, -1.0]",
        [](const Scenario& s) { return s.blood.blockMin == Vec3(-1, -3, -1); }},
       {"blood.block_max", "[1.0, 0.0, 1.0]", [](const Scenario& s) { return s.blood.blockMax == Vec3(1, 0, 1); }},

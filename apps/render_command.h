@@ -1,0 +1,31 @@
+#pragma once
+// `heartsim render SCENARIO --times 0,0.08,1,2 --views front,right,left,top --out DIR`: runs
+// the scenario headless and draws it offscreen (EGL, no display needed) at the given times from
+// the given sides: DIR/t<time>_<view>.png for each, and DIR/contact_sheet.png with one row per
+// time and one column per view (docs/rendering.md).
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hs::app {
+
+struct RenderOptions {
+  std::string scenario = "heart-only";
+  std::vector<std::string> overrides;  // --set KEY=VALUE
+  std::string times;                   // "0,0.08,1": seconds; empty: 0 and the duration
+  std::string views = "front,left,right,top";
+  std::string outDir;                  // empty: results/<scenario name>/render
+  std::string size = "800x600";        // WxH pixels of each view
+  std::optional<bool> clip;            // cut the wall open at z = clipZ; default: when there is a heart
+  double clipZ = 0;                    // m
+  double wallOpacity = 1;              // (0, 1]; < 1 draws a see-through wall
+  double speedMax = 0;                 // m/s, top of the blood colour scale; 0: from the scenario
+  int threads = 0;                     // 0 = all cores
+};
+
+// "0", "0.08", "1.5": seconds with up to 6 decimals and no trailing zeros (file names, labels).
+std::string formatTime(double seconds);
+
+int renderCommand(const RenderOptions& options);
+
+}  // namespace hs::app

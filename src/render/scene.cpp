@@ -1,0 +1,176 @@
+#include "render/scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace hs::render {
+namespace {
+
+Vec3f toVec3f(const pbd::Vec3& v) { return v.cast<float>(); }
+
+// Corners of a box as the 12 edges' point pairs.
+std::vector<Vec3f> boxEdges(const Vec3f& lo, const Vec3f& hi) {
+  std::vector<Vec3f> points;
+  auto corner = [&](int i) {
+    return Vec3f((i & 1) ? hi.x() : lo.x(), (i & 2) ? hi.y() : lo.y(), (i & 4) ? hi.z() : lo.z());
+  };
+  for (int i = 0; i < 8; ++i)
+    for (int bit : {1, 2, 4})
+      if ((i & bit) == 0) {
+        points.push_back(corner(i));
+        points.push_back(corner(i | bit));
+      }
+  return points;
+}
+
+// Vertex normals that stay smooth across gentle bends and keep creases (the wall's rim, the
+// vessel ends): each triangle corner averages the area-weighted normals of the triangles at
+// its vertex that lie within ~50 degrees of its own.
+void addWall(const cardiac::HeartSimulation& sim, WallMesh& wall) {
+  const auto& model = sim.model();
+  const auto& x = sim.particles().position;
+  const std::size_t n = model.surface.size();
+  std::vector<Vec3f> faceNormal(n);  // area-weighted (length = 2 area)
+  std::vector<std::vector<std::uint32_t>> facesAt(model.mesh.vertices.size());
+  for (std::size_t f = 0; f < n; ++f) {
+    const auto& t = model.surface[f];
+    faceNormal[f] = (toVec3f(x[t[1]]) - toVec3f(x[t[0]])).cross(toVec3f(x[t[2]]) - toVec3f(x[t[0]]));
+    for (pbd::Index v : t) facesAt[v].push_back(std::uint32_t(f));
+  }
+  constexpr float kCreaseCos = 0.64f;  // cos 50 degrees
+  wall.positions.reserve(3 * n);
+  wall.normals.reserve(3 * n);
+  wall.colours.reserve(3 * n);
+  for (std::size_t f = 0; f < n; ++f) {
+    const Vec3f own = faceNormal[f].normalized();
+    for (pbd::Index v : model.surface[f]) {
+      Vec3f sum = Vec3f::Zero();
+      for (std::uint32_t g : facesAt[v])
+        if (faceNormal[g].normalized().dot(own) >= kCreaseCos) sum += faceNormal[g];
+      wall.positions.push_back(toVec3f(x[v]));
+      wall.normals.push_back(sum.squaredNorm() > 0 ? sum.normalized() : own);
+      wall.colours.push_back(regionColour(model.region[v]));
+    }
+  }
+}
+
+}  // namespace
+
+Vec3f regionColour(cardiac::Region region) {
+  switch (region) {
+    case cardiac::Region::Myocardium: return {0.80f, 0.27f, 0.30f};
+    case cardiac::Region::BasePlate: return {0.95f, 0.84f, 0.74f};
+    case cardiac::Region::InflowVessel: return {0.93f, 0.66f, 0.70f};
+    case cardiac::Region::OutflowVessel: return {0.96f, 0.74f, 0.62f};
+  }
+  return {1, 1, 1};
+}
+
+Vec3f speedColour(double fraction) {
+  static const Vec3f kStops[] = {{0.16f, 0.30f, 0.85f}, {0.10f, 0.68f, 0.88f}, {0.30f, 0.80f, 0.42f},
+                                 {0.98f, 0.86f, 0.18f}};
+  constexpr int kSegments = 3;
+  const double t = std::clamp(std::isfinite(fraction) ? fraction : 1.0, 0.0, 1.0) * kSegments;
+  const int i = std::min(int(t), kSegments - 1);
+  const float u = float(t - i);
+  return kStops[i] * (1 - u) + kStops[i + 1] * u;
+}
+
+viz::Rgb toRgb(const Vec3f& c) {
+  auto byte = [](float v) { return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255)); };
+  return {byte(c.x()), byte(c.y()), byte(c.z())};
+}
+
+double defaultSpeedScale(const cardiac::Scenario& scenario) {
+  const double g = std::max(double(scenario.simulation.gravity.norm()), 1e-6);
+  const double h = std::max(double(scenario.blood.blockMax.y() - scenario.blood.blockMin.y()), 1e-6);
+  const double v = std::sqrt(2 * g * h);
+  const double decade = std::pow(10.0, std::floor(std::log10(v)));
+  for (double m : {1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0})
+    if (m * decade >= v * (1 - 1e-9)) return m * decade;
+  return 10 * decade;
+}
+
+Box sceneBounds(const cardiac::HeartSimulation& sim) {
+  const auto& s = sim.scenario();
+  Box box{Vec3f::Constant(INFINITY), Vec3f::Constant(-INFINITY)};
+  auto add = [&](const pbd::Vec3& p) {
+    box.min = box.min.cwiseMin(toVec3f(p));
+    box.max = box.max.cwiseMax(toVec3f(p));
+  };
+  if (sim.hasHeart())
+    for (const auto& v : sim.model().mesh.vertices) add(v);
+  if (s.container.enabled) {
+    add(s.container.min);
+    add(s.container.max);
+  }
+  if (!sim.hasHeart() && !s.container.enabled && sim.hasBlood()) {
+    add(s.blood.blockMin);
+    add(s.blood.blockMax);
+  }
+  if (!(box.min.array() <= box.max.array()).all()) box = Box{Vec3f::Constant(-1), Vec3f::Constant(1)};
+  return box;
+}
+
+Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& options) {
+  Scene scene;
+  scene.bounds = sceneBounds(sim);
+  const auto& s = sim.scenario();
+  if (sim.hasHeart()) {
+    addWall(sim, scene.wall);
+    scene.wall.opacity = std::clamp(options.wallOpacity, 0.05f, 1.0f);
+  }
+  if (options.clip) {
+    scene.clip.enabled = true;
+    scene.clip.normal = Vec3f(0, 0, 1);
+    scene.clip.offset = -options.clipZ;
+  }
+  if (s.container.enabled) scene.lines.points = boxEdges(toVec3f(s.container.min), toVec3f(s.container.max));
+  if (sim.hasBlood()) {
+    const double speedMax = options.speedMax > 0 ? options.speedMax : defaultSpeedScale(s);
+    const auto& p = sim.particles();
+    scene.particles.radius = float(s.blood.radius);
+    for (std::size_t i = sim.firstBloodParticle(); i < p.size(); ++i) {
+      scene.particles.centres.push_back(toVec3f(p.position[i]));
+      scene.particles.colours.push_back(speedColour(double(p.velocity[i].norm()) / speedMax));
+    }
+  }
+  return scene;
+}
+
+void applyView(Scene& scene, const SceneOptions& options, View view) {
+  const float opacity = std::clamp(options.wallOpacity, 0.05f, 1.0f);
+  const bool facing = std::abs(viewDirection(view).dot(scene.clip.normal)) >= 0.5f;
+  scene.clip.enabled = options.clip && facing;
+  scene.wall.opacity = options.clip && !facing && !scene.particles.centres.empty() ? std::min(opacity, 0.45f) : opacity;
+}
+
+void drawSpeedLegend(viz::Image& image, double speedMax) {
+  const int scale = std::max(1, std::min(image.width(), image.height()) / 300);
+  const int barWidth = 18 * scale, barHeight = std::min(image.height() / 4, 90 * scale);
+  const int margin = 8 * scale;
+  char top[32], mid[32];
+  std::snprintf(top, sizeof top, "%g", speedMax);
+  std::snprintf(mid, sizeof mid, "%g", speedMax / 2);
+  const std::string title = "blood speed (m/s)";
+  const int labelWidth = viz::Image::textWidth(top, scale) + 4 * scale;
+  const int boxWidth = std::max(barWidth + labelWidth, viz::Image::textWidth(title, scale)) + 2 * margin;
+  const int boxHeight = barHeight + viz::Image::lineHeight(scale) + 3 * margin;
+  const int x0 = image.width() - boxWidth - margin, y0 = image.height() - boxHeight - margin;
+  image.fillRect({x0, y0, boxWidth, boxHeight}, {250, 250, 252});
+  image.strokeRect({x0, y0, boxWidth, boxHeight}, {150, 155, 165});
+  image.drawText(x0 + margin, y0 + margin, title, scale, {40, 40, 50});
+  const int barX = x0 + margin, barY = y0 + 2 * margin + viz::Image::lineHeight(scale);
+  for (int row = 0; row < barHeight; ++row) {
+    const viz::Rgb c = toRgb(speedColour(1.0 - double(row) / double(barHeight - 1)));
+    image.fillRect({barX, barY + row, barWidth, 1}, c);
+  }
+  image.strokeRect({barX, barY, barWidth, barHeight}, {90, 90, 100});
+  const int textX = barX + barWidth + 4 * scale, capHalf = viz::Image::capHeight(scale) / 2;
+  image.drawText(textX, barY - capHalf, top, scale, {40, 40, 50});
+  image.drawText(textX, barY + barHeight / 2 - capHalf, mid, scale, {40, 40, 50});
+  image.drawText(textX, barY + barHeight - 1 - capHalf, "0", scale, {40, 40, 50});
+}
+
+}  // namespace hs::render

@@ -1,0 +1,47 @@
+#pragma once
+// From a simulation to a render::Scene: the heart wall's surface at the current particle
+// positions (crease-aware smooth normals, coloured by region), blood particles coloured by
+// speed, the container as a wireframe box, and the speed legend drawn into a finished image.
+#include "cardiac/heart_simulation.h"
+#include "render/renderer.h"
+#include "viz/image.h"
+
+namespace hs::render {
+
+struct SceneOptions {
+  // Cut the wall open: remove what lies at z > clipZ (anterior of the plane, toward the
+  // front camera), so the cavity and the blood inside are visible.
+  bool clip = false;
+  float clipZ = 0;        // m
+  float wallOpacity = 1;  // < 1: see-through wall
+  double speedMax = 0;    // m/s at the top of the colour scale; 0: defaultSpeedScale(scenario)
+};
+
+// Region colours (linear RGB in [0, 1]): myocardium red-pink, base plate and vessels lighter.
+Vec3f regionColour(cardiac::Region region);
+// Slow (blue) to fast (yellow) through cyan and green; fraction is clamped to [0, 1].
+Vec3f speedColour(double fraction);
+viz::Rgb toRgb(const Vec3f& colour);
+
+// The speed at the top of the colour scale when none is given: the free-fall speed
+// sqrt(2 g H) over the height H of the blood's start block, rounded up to 1, 1.5, 2, 3, 4, 5,
+// 6 or 8 times a power of ten; blood cannot go much faster than that.
+double defaultSpeedScale(const cardiac::Scenario& scenario);
+
+// What the cameras frame: the wall's rest shape (so every time is seen from the same place)
+// and the container, or the blood's start block when there is neither.
+Box sceneBounds(const cardiac::HeartSimulation& sim);
+
+Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& options);
+
+// Sets the cut and the wall's opacity for one view. The cut is made only in views that look
+// at the cutting plane (front, for z = const): in the others it would be seen edge-on and
+// only halve the heart, so they show the whole wall, see-through (opacity at most 0.45) when
+// there is blood to see inside.
+void applyView(Scene& scene, const SceneOptions& options, View view);
+
+// The colour bar "blood speed (m/s)" from 0 to speedMax in the image's lower right corner,
+// text scaled with the image.
+void drawSpeedLegend(viz::Image& image, double speedMax);
+
+}  // namespace hs::render

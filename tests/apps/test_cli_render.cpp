@@ -1,0 +1,123 @@
+// `heartsim render` with no display at all: every requested view and the contact sheet are
+// written, are not blank and show the wall's or the blood's colour; bad views, times, sizes
+// and output folders stop it with exit 2 and one line.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "cli_runner.h"
+#include "viz/image.h"
+
+namespace {
+
+using hs::testing::CliResult;
+using hs::testing::runHeartsim;
+using hs::testing::scratchDir;
+namespace fs = std::filesystem;
+
+CliResult renderNoDisplay(const std::string& args, const fs::path& dir) {
+  return runHeartsim("render " + args, dir);  // the test process itself runs without DISPLAY
+}
+
+double variance(const hs::viz::Image& image) {
+  double sum = 0, sumSq = 0;
+  const auto& p = image.pixels();
+  for (std::uint8_t v : p) {
+    sum += v;
+    sumSq += double(v) * v;
+  }
+  const double n = double(p.size());
+  return sumSq / n - (sum / n) * (sum / n);
+}
+
+template <class Pred>
+int countPixels(const hs::viz::Image& image, Pred pred) {
+  int n = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) n += pred(image.at(x, y));
+  return n;
+}
+
+bool wallRed(hs::viz::Rgb c) { return c.r > 120 && c.r > c.g + 60 && c.r > c.b + 50; }
+bool bloodBlue(hs::viz::Rgb c) { return c.b > 120 && c.b > c.r + 60; }
+
+void expectImages(const fs::path& out, const std::vector<std::string>& names, bool (*colour)(hs::viz::Rgb),
+                  int w, int h) {
+  for (const std::string& name : names) {
+    SCOPED_TRACE(name);
+    ASSERT_TRUE(fs::exists(out / name));
+    const hs::viz::Image image = hs::viz::Image::loadPng((out / name).string());
+    if (name != "contact_sheet.png") {
+      EXPECT_EQ(image.width(), w);
+      EXPECT_EQ(image.height(), h);
+    }
+    EXPECT_GT(variance(image), 100.0);
+    EXPECT_GT(countPixels(image, colour), 200);
+  }
+}
+
+void expectBadInput(const std::string& args, const std::string& mustMention) {
+  const auto dir = scratchDir("render_bad");
+  const CliResult r = renderNoDisplay(args, dir);
+  EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(mustMention), std::string::npos) << "missing '" << mustMention << "' in: " << r.err;
+}
+
+class CliRender : public ::testing::Test {
+ protected:
+  void SetUp() override { unsetenv("DISPLAY"); }
+};
+
+TEST_F(CliRender, HeartOnlyWritesEveryViewAndTheContactSheetWithoutADisplay) {
+  const auto dir = scratchDir("render_heart");
+  const CliResult r = renderNoDisplay("heart-only --times 0.08,0 --views front,top --out D --size 320x240", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  expectImages(dir / "D", {"t0_front.png", "t0_top.png", "t0.08_front.png", "t0.08_top.png", "contact_sheet.png"},
+               wallRed, 320, 240);
+  const hs::viz::Image sheet = hs::viz::Image::loadPng((dir / "D" / "contact_sheet.png").string());
+  EXPECT_GT(sheet.width(), 2 * 320);   // two columns
+  EXPECT_GT(sheet.height(), 2 * 240);  // two rows
+}
+
+TEST_F(CliRender, FluidAtRestShowsTheBlood) {
+  const auto dir = scratchDir("render_fluid");
+  const CliResult r = renderNoDisplay("fluid-at-rest --times 0,0.01 --views front,left --out D --size 320x240", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  expectImages(dir / "D",
+               {"t0_front.png", "t0_left.png", "t0.01_front.png", "t0.01_left.png", "contact_sheet.png"},
+               bloodBlue, 320, 240);
+}
+
+TEST_F(CliRender, UnknownViewNamesTheValidOnes) {
+  expectBadInput("heart-only --times 0 --views front,back --out D", "unknown view 'back'; valid views: front, left, right, top");
+}
+
+TEST_F(CliRender, NegativeTimeIsRejected) { expectBadInput("heart-only --times 0,-0.5 --out D", "-0.5 s is negative"); }
+
+TEST_F(CliRender, TimeBeyondTheDurationIsRejected) {
+  expectBadInput("heart-only --times 0,5 --out D", "beyond the scenario's duration of 2 s");
+}
+
+TEST_F(CliRender, TimeThatIsNotANumberIsRejected) {
+  expectBadInput("heart-only --times 0,abc --out D", "'abc' is not a time");
+  expectBadInput("heart-only --times nan --out D", "'nan' is not a time");
+}
+
+TEST_F(CliRender, BadSizeIsRejected) { expectBadInput("heart-only --times 0 --size 800 --out D", "--size: '800'"); }
+
+TEST_F(CliRender, UnwritableOutputFolderIsRejected) {
+  const auto dir = scratchDir("render_unwritable");
+  { std::ofstream(dir / "a_file") << "x"; }
+  const CliResult r = renderNoDisplay("heart-only --times 0 --out '" + (dir / "a_file" / "sub").string() + "'", dir);
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("cannot create output directory"), std::string::npos) << r.err;
+}
+
+}  // namespace

@@ -1,0 +1,109 @@
+// Scene building from a simulation: one triangle per surface face, region colours, unit
+// normals, blood coloured by speed, the container as a wireframe, framing bounds.
+#include <gtest/gtest.h>
+
+#include "cardiac/heart_simulation.h"
+#include "render/scene.h"
+
+namespace {
+
+using hs::render::Vec3f;
+
+TEST(Scene, WallHasOneTrianglePerSurfaceFaceWithRegionColoursAndUnitNormals) {
+  hs::cardiac::Scenario scenario;  // heart-only, thesis scale
+  const hs::cardiac::HeartSimulation sim(scenario, 1);
+  const hs::render::Scene scene = hs::render::buildScene(sim, {});
+  ASSERT_EQ(scene.wall.triangleCount(), sim.model().surface.size());
+  ASSERT_EQ(scene.wall.normals.size(), scene.wall.positions.size());
+  ASSERT_EQ(scene.wall.colours.size(), scene.wall.positions.size());
+  std::size_t myocardium = 0, vessel = 0;
+  for (std::size_t f = 0; f < sim.model().surface.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto v = sim.model().surface[f][k];
+      const std::size_t i = 3 * f + k;
+      EXPECT_NEAR(scene.wall.normals[i].norm(), 1.0f, 1e-4f);
+      EXPECT_TRUE(scene.wall.positions[i].isApprox(sim.particles().position[v].cast<float>()));
+      EXPECT_EQ(scene.wall.colours[i], hs::render::regionColour(sim.model().region[v]));
+      myocardium += sim.model().region[v] == hs::cardiac::Region::Myocardium;
+      vessel += sim.model().region[v] == hs::cardiac::Region::OutflowVessel;
+    }
+  EXPECT_GT(myocardium, 0u);
+  EXPECT_GT(vessel, 0u);
+  // Myocardium reads red, the vessels lighter.
+  const Vec3f red = hs::render::regionColour(hs::cardiac::Region::Myocardium);
+  EXPECT_GT(red.x(), red.y() + 0.3f);
+  EXPECT_GT(hs::render::regionColour(hs::cardiac::Region::OutflowVessel).sum(), red.sum());
+  EXPECT_TRUE(scene.particles.centres.empty());
+  EXPECT_TRUE(scene.lines.points.empty());
+}
+
+TEST(Scene, NormalsPointOutOfTheWall) {
+  hs::cardiac::Scenario scenario;
+  const hs::cardiac::HeartSimulation sim(scenario, 1);
+  const hs::render::Scene scene = hs::render::buildScene(sim, {});
+  // The apex's outer surface (lowest point) faces down.
+  std::size_t lowest = 0;
+  for (std::size_t i = 0; i < scene.wall.positions.size(); ++i)
+    if (scene.wall.positions[i].y() < scene.wall.positions[lowest].y()) lowest = i;
+  EXPECT_LT(scene.wall.normals[lowest].y(), -0.8f);
+}
+
+TEST(Scene, BloodIsColouredBySpeedAndTheContainerIsAWireframe) {
+  hs::cardiac::Scenario scenario;
+  scenario.heart = false;
+  scenario.cycle.enabled = false;
+  scenario.blood.enabled = true;
+  scenario.blood.particles = 0;
+  scenario.blood.radius = 0.0025f;
+  scenario.blood.spacing = 0.005f;
+  scenario.blood.supportRadius = 0.01f;
+  scenario.blood.blockMin = hs::pbd::Vec3(0, 0, 0);
+  scenario.blood.blockMax = hs::pbd::Vec3(0.02f, 0.02f, 0.02f);
+  scenario.container.enabled = true;
+  scenario.container.min = hs::pbd::Vec3(0, 0, 0);
+  scenario.container.max = hs::pbd::Vec3(0.04f, 0.04f, 0.04f);
+  const hs::cardiac::HeartSimulation sim(scenario, 1);
+  hs::render::SceneOptions options;
+  options.speedMax = 1.0;
+  const hs::render::Scene scene = hs::render::buildScene(sim, options);
+  const std::size_t blood = sim.particles().size() - sim.firstBloodParticle();
+  ASSERT_GT(blood, 0u);
+  EXPECT_EQ(scene.particles.centres.size(), blood);
+  EXPECT_FLOAT_EQ(scene.particles.radius, 0.0025f);
+  for (const Vec3f& c : scene.particles.colours) EXPECT_EQ(c, hs::render::speedColour(0));  // at rest
+  EXPECT_EQ(scene.lines.points.size(), 24u);  // 12 edges
+  EXPECT_TRUE(scene.wall.positions.empty());
+  EXPECT_TRUE(scene.bounds.max.isApprox(Vec3f(0.04f, 0.04f, 0.04f)));
+}
+
+TEST(Scene, SpeedColoursRunFromBlueToYellow) {
+  const Vec3f slow = hs::render::speedColour(0), fast = hs::render::speedColour(1);
+  EXPECT_GT(slow.z(), slow.x() + 0.5f);
+  EXPECT_GT(fast.x(), fast.z() + 0.5f);
+  EXPECT_EQ(hs::render::speedColour(-3), slow);
+  EXPECT_EQ(hs::render::speedColour(7), fast);
+}
+
+TEST(Scene, DefaultSpeedScaleIsTheRoundedFreeFallSpeedOfTheBlock) {
+  hs::cardiac::Scenario scenario;
+  scenario.blood.blockMin = hs::pbd::Vec3(0, 0, 0);
+  scenario.blood.blockMax = hs::pbd::Vec3(0.05f, 0.1143f, 0.05f);  // sqrt(2 g H) = 1.50 m/s
+  EXPECT_DOUBLE_EQ(hs::render::defaultSpeedScale(scenario), 1.5);
+  scenario.blood.blockMax = hs::pbd::Vec3(0.05f, 0.1f, 0.05f);  // 1.40 m/s
+  EXPECT_DOUBLE_EQ(hs::render::defaultSpeedScale(scenario), 1.5);
+}
+
+TEST(Scene, TheCutIsMadeOnlyInViewsThatLookAtIt) {
+  hs::cardiac::Scenario scenario;
+  const hs::cardiac::HeartSimulation sim(scenario, 1);
+  hs::render::SceneOptions options;
+  options.clip = true;
+  hs::render::Scene scene = hs::render::buildScene(sim, options);
+  hs::render::applyView(scene, options, hs::render::View::Front);
+  EXPECT_TRUE(scene.clip.enabled);
+  hs::render::applyView(scene, options, hs::render::View::Left);
+  EXPECT_FALSE(scene.clip.enabled);
+  EXPECT_EQ(scene.wall.opacity, 1.0f);  // no blood to show through the wall
+}
+
+}  // namespace
