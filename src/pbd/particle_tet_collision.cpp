@@ -82,7 +82,18 @@ std::size_t ParticleTetCollider::resolve(Particles& particles, Index first, Inde
       });
       if (hit < 0) break;
       const auto t = std::size_t(hit);
-      const TetPushOut out = pushOutOfTet(tetPoints(p, m_tets[t]), x, previous, settings.radius, m_exitFaces[t]);
+      const TetPoints now = tetPoints(p, m_tets[t]);
+      // The ray in the tet's own frame: where the particle started, carried along by the
+      // tet's motion this step (u = sum_k lambda_k (p_k - x_k) at the particle's barycentric
+      // coordinates). A wall sweeping over a resting particle then pushes it out through the
+      // face that swept over it, not the nearest one; for a resting tet this is eq. 4.20's ray.
+      const TetPointQuery q = queryPointInTet(now, x);
+      Vec3 sweep = Vec3::Zero();
+      for (int k = 0; k < 4; ++k)
+        sweep += q.barycentric[std::size_t(k)] * (p[m_tets[t][std::size_t(k)]] - particles.position[m_tets[t][std::size_t(k)]]);
+      const Vec3 start = previous + sweep;
+      const Vec3 before = x;
+      const TetPushOut out = pushOutOfTet(now, x, start, settings.radius, m_exitFaces[t]);
       if (out.face < 0) break;  // degenerate tet: nothing it can say
       changed = true;
       walking = false;
@@ -90,7 +101,7 @@ std::size_t ParticleTetCollider::resolve(Particles& particles, Index first, Inde
       if (out.alongRay && !(m_exitFaces[t] & (1u << out.face))) {
         // Entered through an inner face: step just across it into the tet the ray came from
         // and push again from there (eq. 4.20 measured from the solid's surface).
-        ray = (p[i] - previous).normalized();
+        ray = (before - start).normalized();
         entry = out.position + settings.radius * ray;
         x = entry - (Real(1e-3) * settings.radius) * ray;
         walking = true;

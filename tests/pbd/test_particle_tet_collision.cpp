@@ -126,6 +126,27 @@ TEST(ParticleTetCollision, ASolidMovingOntoRestingParticlesPushesThemOut) {
   EXPECT_EQ(stillInside, 0u);
 }
 
+TEST(ParticleTetCollision, AWallSweepingOverRestingParticlesPushesThemAheadOfIt) {
+  // The cube moves 0.3 along +x in one step onto particles resting at x = 0.85, close to its
+  // -y face. The face that swept over them is +x: they end at x = 1 + r, not below the
+  // nearest face (y = -r).
+  World w = world(0, 1, false);
+  for (Index v = 0; v < w.firstFree; ++v) w.particles.position[v] -= Vec3(Real(0.3), 0, 0);
+  std::vector<Index> ids;
+  for (int k = 0; k < 9; ++k)
+    ids.push_back(w.particles.add(Vec3(Real(0.85), Real(0.02) + Real(0.1) * Real(k), Real(0.37)), 1, ParticleKind::Fluid));
+  ParticleTetCollider collider(w.cube.tets, 0);
+  ParticleTetSettings s;
+  s.radius = Real(0.02);
+  collider.resolve(w.particles, w.firstFree, Index(w.particles.size()), s);
+  for (const Index i : ids) {
+    const Vec3& p = w.particles.predicted[i];
+    EXPECT_NEAR(double(p.x()), 1.02, 1e-4) << "particle " << i;
+    EXPECT_NEAR(double(p.y()), double(w.particles.position[i].y()), 1e-4) << "particle " << i;
+    EXPECT_FALSE(insideAnyTet(w, w.particles.predicted, p, 0));
+  }
+}
+
 TEST(ParticleTetCollision, CountInsideMatchesBruteForceDepth) {
   World w = world(2000, 9, false);
   ParticleTetCollider collider(w.cube.tets, 0);
