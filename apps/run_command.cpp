@@ -182,12 +182,18 @@ int runCommand(const RunOptions& options) {
   csv.precision(9);
 
   const bool vtk = options.vtk || scenario.output.vtk;
-  const std::string framePrefix = sim.hasHeart() ? "wall" : "blood";
-  io::PvdSeries series(outDir / (framePrefix + ".pvd"));
+  // One ParaView series per body: wall_N.vtu (tets) and blood_N.vtu (points).
+  io::PvdSeries wallSeries(outDir / "wall.pvd"), bloodSeries(outDir / "blood.pvd");
   auto writeFrame = [&](std::int64_t step) {
-    const std::string name = framePrefix + "_" + std::to_string(step) + ".vtu";
-    io::writeVtu(outDir / name, sim.hasHeart() ? wallFrame(sim) : bloodFrame(sim));
-    series.add(sim.time(), name);
+    const std::string suffix = "_" + std::to_string(step) + ".vtu";
+    if (sim.hasHeart()) {
+      io::writeVtu(outDir / ("wall" + suffix), wallFrame(sim));
+      wallSeries.add(sim.time(), "wall" + suffix);
+    }
+    if (sim.hasBlood()) {
+      io::writeVtu(outDir / ("blood" + suffix), bloodFrame(sim));
+      bloodSeries.add(sim.time(), "blood" + suffix);
+    }
   };
 
   const double dt = scenario.simulation.dt;
@@ -256,7 +262,8 @@ int runCommand(const RunOptions& options) {
     }
     progress.finish();
     beats.finish();
-    if (vtk) series.write();
+    if (vtk && sim.hasHeart()) wallSeries.write();
+    if (vtk && sim.hasBlood()) bloodSeries.write();
     csv.flush();
     if (!csv) throw std::runtime_error((outDir / "metrics.csv").string() + ": write failed (disk full?)");
   } catch (const std::runtime_error& e) {
