@@ -1,4 +1,4 @@
-// heartsim: the command-line entry point. Subcommands: run, render, bench, validate.
+// heartsim: the command-line entry point. Subcommands: run, view, render, bench, validate.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
@@ -8,6 +8,7 @@
 #include "run_command.h"
 #include "validate_command.h"
 #include "version.h"
+#include "view_command.h"
 
 int main(int argc, char** argv) {
   using namespace hs::app;
@@ -43,6 +44,17 @@ int main(int argc, char** argv) {
   renderApp->add_option("--speed-max", render.speedMax, "Blood speed (m/s) at the top of the colour scale (0: from the scenario)");
   renderApp->add_option("--threads", render.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   renderApp->add_option("--set", render.overrides, "Override a scenario key: --set cycle.beats=2 (repeatable)")
+      ->take_all()
+      ->expected(1);
+
+  ViewOptions view;
+  CLI::App* viewApp = app.add_subcommand("view", "Open the interactive viewer: watch, steer and photograph a scenario");
+  viewApp->add_option("scenario", view.scenario, "Built-in scenario name or path to a .toml file")->capture_default_str();
+  viewApp->add_option("--size", view.size, "Window size, WIDTHxHEIGHT pixels")->capture_default_str();
+  viewApp->add_option("--frames", view.frames, "Quit after N frames (scripted use; 0 = until closed)");
+  viewApp->add_option("--screenshot", view.screenshot, "Save the last frame as this PNG file");
+  viewApp->add_option("--threads", view.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  viewApp->add_option("--set", view.overrides, "Override a scenario key: --set cycle.beats=2 (repeatable)")
       ->take_all()
       ->expected(1);
 
@@ -89,6 +101,7 @@ int main(int argc, char** argv) {
       if (renderApp->count("--clip") + renderApp->count("--no-clip") > 0) render.clip = renderClip;
       return renderCommand(render);
     }
+    if (viewApp->parsed()) return viewCommand(view);
     if (benchApp->parsed()) return benchCommand(bench);
     if (damBreakApp->parsed()) return validateDamBreakCommand(validate);
   } catch (const std::exception& e) {

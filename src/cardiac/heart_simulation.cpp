@@ -83,10 +83,19 @@ HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
     // The start block first: it checks the particle count against memory before anything
     // else is allocated; then the solver settings check the remaining parameters.
     const std::vector<pbd::Vec3> start = bloodStartPositions(scenario);
-    m_fluid = std::make_unique<pbd::FluidSolver>(bloodSolverSettings(scenario, threads));
+    if (m_model) m_wallContact = std::make_unique<pbd::ParticleTetCollider>(m_model->mesh.tets, m_firstWallParticle);
+    pbd::FluidStepSettings fluid = bloodSolverSettings(scenario, threads);
+    if (m_model) {
+      // The wall takes part in every density iteration (and once more after its own
+      // constraints, in step()): blood squeezed by the beating wall must not be pushed
+      // through it by its own pressure.
+      fluid.afterIteration = [this](std::vector<pbd::Vec3>& x, std::span<const Index> ids, const pbd::Particles& p) {
+        m_wallContact->resolvePoints(p, x, ids, wallContactSettings());
+      };
+    }
+    m_fluid = std::make_unique<pbd::FluidSolver>(fluid);
     const Real inverseMass = Real(1) / m_fluid->settings().fluid.particleMass;
     for (const pbd::Vec3& x : start) m_particles.add(x, inverseMass, pbd::ParticleKind::Fluid);
-    if (m_model) m_wallContact = std::make_unique<pbd::ParticleTetCollider>(m_model->mesh.tets, m_firstWallParticle);
     m_bloodIds.resize(m_particles.size() - m_firstBloodParticle);
     for (std::size_t k = 0; k < m_bloodIds.size(); ++k) m_bloodIds[k] = Index(k);
     reorderBlood();
@@ -113,15 +122,19 @@ void HeartSimulation::step() {
   };
   if (m_wallContact) {
     hooks.afterProjection = [this](pbd::Particles& p) {
-      pbd::ParticleTetSettings contact;
-      contact.radius = m_scenario.blood.radius;
-      contact.threads = m_threads;
-      m_wallContact->resolve(p, m_firstBloodParticle, Index(p.size()), contact);
+      m_wallContact->resolve(p, m_firstBloodParticle, Index(p.size()), wallContactSettings());
     };
   }
   if (m_fluid) hooks.postProcessVelocities = [this](pbd::Particles& p) { m_fluid->postProcessVelocities(p); };
   pbd::step(m_constraints, m_particles, m_solver, hooks);
   ++m_steps;
+}
+
+pbd::ParticleTetSettings HeartSimulation::wallContactSettings() const {
+  pbd::ParticleTetSettings contact;
+  contact.radius = m_scenario.blood.radius;
+  contact.threads = m_threads;
+  return contact;
 }
 
 BloodStats HeartSimulation::bloodStats() const {

@@ -80,6 +80,7 @@ class HeartSimulation {
   Vec3 m_domainMin = Vec3::Zero(), m_domainMax = Vec3::Zero();  // outside: blood is lost
   std::vector<Index> m_bloodIds;
   void reorderBlood();
+  pbd::ParticleTetSettings wallContactSettings() const;
   std::vector<Real> m_restVolume;  // per model tet
   std::int64_t m_steps = 0;
   Phase m_lastPhase = Phase::Systole;

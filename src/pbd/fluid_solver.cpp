@@ -101,6 +101,7 @@ void FluidSolver::projectDensity(Particles& particles) {
       if (mesh) p = mesh->collide(m_x[s], p, radius);
       m_p[s] = p;
     }
+    if (m_settings.afterIteration) m_settings.afterIteration(m_p, m_slotParticle, particles);
   }
 
 #pragma omp parallel for schedule(static) num_threads(threads) if (parallel)

@@ -21,6 +21,7 @@
 // with tissue should call applyExternalForces/predictPositions itself and use
 // projectDensity() between prediction and the velocity update and postProcessVelocities()
 // after it.
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -45,6 +46,11 @@ struct FluidStepSettings {
   // kept particleRadius from the mesh on the side it came from (mesh_collider.h). Shared,
   // read-only: copies of the settings use the same mesh.
   std::shared_ptr<const StaticMeshCollider> mesh;
+  // Called after every density iteration with the working positions (slot order) and the
+  // particle of each slot: contacts with moving bodies the solver does not know (the heart
+  // wall) take part in the iterations, as collisions do in PBF's Algorithm 1.
+  std::function<void(std::vector<Vec3>& positions, std::span<const Index> slotParticles, const Particles& particles)>
+      afterIteration;
 };
 
 class FluidSolver {

@@ -55,6 +55,56 @@ void ParticleTetCollider::rebuild(const std::vector<Vec3>& positions, Real paddi
   m_grid.build(positions, m_tets);
 }
 
+bool ParticleTetCollider::pushOut(const std::vector<Vec3>& p, const std::vector<Vec3>& start, Vec3& x,
+                                  const Vec3& previous, const ParticleTetSettings& settings) const {
+  bool changed = false;
+  // While walking back along the ray through interior faces, the entry point of the last tet
+  // and the ray's unit direction: the particle must end `radius` beyond the entry into the
+  // solid, not into one of its inner tets.
+  bool walking = false;
+  Vec3 entry = Vec3::Zero(), ray = Vec3::Zero();
+  for (int pass = 0; pass < settings.maxPasses; ++pass) {
+    // The lowest-numbered tet holding the particle (deterministic), then push out of it.
+    int hit = -1;
+    m_grid.forEachCandidate(x, [&](Index t) {
+      if (hit < 0 && isPointInTet(tetPoints(p, m_tets[t]), x, kBarycentricSlack)) hit = int(t);
+    });
+    if (hit < 0) break;
+    const auto t = std::size_t(hit);
+    const TetPoints now = tetPoints(p, m_tets[t]);
+    // The ray in the tet's own frame: where the particle started, carried along by the
+    // tet's motion this step (u = sum_k lambda_k (p_k - x_k) at the particle's barycentric
+    // coordinates). A wall sweeping over a resting particle then pushes it out through the
+    // face that swept over it, not the nearest one; for a resting tet this is eq. 4.20's ray.
+    const TetPointQuery q = queryPointInTet(now, x);
+    Vec3 sweep = Vec3::Zero();
+    for (std::size_t k = 0; k < 4; ++k) sweep += q.barycentric[k] * (p[m_tets[t][k]] - start[m_tets[t][k]]);
+    const Vec3 from = previous + sweep;
+    const Vec3 before = x;
+    const TetPushOut out = pushOutOfTet(now, x, from, settings.radius, m_exitFaces[t]);
+    if (out.face < 0) break;  // degenerate tet: nothing it can say
+    changed = true;
+    walking = false;
+    x = out.position;
+    if (out.alongRay && !(m_exitFaces[t] & (1u << out.face))) {
+      // Entered through an inner face: step just across it into the tet the ray came from
+      // and push again from there (eq. 4.20 measured from the solid's surface).
+      ray = (before - from).normalized();
+      entry = out.position + settings.radius * ray;
+      x = entry - (Real(1e-3) * settings.radius) * ray;
+      walking = true;
+    }
+    if (pass + 1 == settings.maxPasses) {
+      x = nearestBoundaryExit(p, x, settings.radius);
+      walking = false;
+    }
+  }
+  // The step across an inner face found no tet (the faces did not quite meet): finish the
+  // push from the last entry.
+  if (walking) x = entry - settings.radius * ray;
+  return changed;
+}
+
 std::size_t ParticleTetCollider::resolve(Particles& particles, Index first, Index end,
                                          const ParticleTetSettings& settings) {
   std::vector<Vec3>& p = particles.predicted;
@@ -67,57 +117,25 @@ std::size_t ParticleTetCollider::resolve(Particles& particles, Index first, Inde
     const Index i = first + Index(s);
     if (particles.inverseMass[i] <= Real(0)) continue;
     Vec3 x = p[i];
-    const Vec3& previous = particles.position[i];
-    bool changed = false;
-    // While walking back along the ray through interior faces, the entry point of the last tet
-    // and the ray's unit direction: the particle must end `radius` beyond the entry into the
-    // solid, not into one of its inner tets.
-    bool walking = false;
-    Vec3 entry = Vec3::Zero(), ray = Vec3::Zero();
-    for (int pass = 0; pass < settings.maxPasses; ++pass) {
-      // The lowest-numbered tet holding the particle (deterministic), then push out of it.
-      int hit = -1;
-      m_grid.forEachCandidate(x, [&](Index t) {
-        if (hit < 0 && isPointInTet(tetPoints(p, m_tets[t]), x, kBarycentricSlack)) hit = int(t);
-      });
-      if (hit < 0) break;
-      const auto t = std::size_t(hit);
-      const TetPoints now = tetPoints(p, m_tets[t]);
-      // The ray in the tet's own frame: where the particle started, carried along by the
-      // tet's motion this step (u = sum_k lambda_k (p_k - x_k) at the particle's barycentric
-      // coordinates). A wall sweeping over a resting particle then pushes it out through the
-      // face that swept over it, not the nearest one; for a resting tet this is eq. 4.20's ray.
-      const TetPointQuery q = queryPointInTet(now, x);
-      Vec3 sweep = Vec3::Zero();
-      for (int k = 0; k < 4; ++k)
-        sweep += q.barycentric[std::size_t(k)] * (p[m_tets[t][std::size_t(k)]] - particles.position[m_tets[t][std::size_t(k)]]);
-      const Vec3 start = previous + sweep;
-      const Vec3 before = x;
-      const TetPushOut out = pushOutOfTet(now, x, start, settings.radius, m_exitFaces[t]);
-      if (out.face < 0) break;  // degenerate tet: nothing it can say
-      changed = true;
-      walking = false;
-      x = out.position;
-      if (out.alongRay && !(m_exitFaces[t] & (1u << out.face))) {
-        // Entered through an inner face: step just across it into the tet the ray came from
-        // and push again from there (eq. 4.20 measured from the solid's surface).
-        ray = (before - start).normalized();
-        entry = out.position + settings.radius * ray;
-        x = entry - (Real(1e-3) * settings.radius) * ray;
-        walking = true;
-      }
-      if (pass + 1 == settings.maxPasses) {
-        x = nearestBoundaryExit(p, x, settings.radius);
-        walking = false;
-      }
-    }
-    // The step across an inner face found no tet (the faces did not quite meet): finish the
-    // push from the last entry.
-    if (walking) x = entry - settings.radius * ray;
-    if (changed) {
+    if (pushOut(p, particles.position, x, particles.position[i], settings)) {
       p[i] = x;
       ++moved;
     }
+  }
+  return moved;
+}
+
+std::size_t ParticleTetCollider::resolvePoints(const Particles& particles, std::vector<Vec3>& points,
+                                               std::span<const Index> ids, const ParticleTetSettings& settings) {
+  rebuild(particles.predicted, Real(1e-3) * settings.radius);
+  const auto count = std::ptrdiff_t(ids.size());
+  std::size_t moved = 0;
+#pragma omp parallel for schedule(static) num_threads(settings.threads) reduction(+ : moved) \
+    if (count >= kParallelThreshold)
+  for (std::ptrdiff_t k = 0; k < count; ++k) {
+    const Index i = ids[std::size_t(k)];
+    if (particles.inverseMass[i] <= Real(0)) continue;
+    moved += pushOut(particles.predicted, particles.position, points[std::size_t(k)], particles.position[i], settings);
   }
   return moved;
 }

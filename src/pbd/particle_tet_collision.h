@@ -18,6 +18,7 @@
 // Parallelism: one particle per loop iteration, reading the solid and writing only its own
 // position, so results are bitwise identical for any thread count.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "pbd/particles.h"
@@ -43,6 +44,12 @@ class ParticleTetCollider {
   // number of particles moved.
   std::size_t resolve(Particles& particles, Index first, Index end, const ParticleTetSettings& settings);
 
+  // The same for points held outside the particle set (a solver's working copy): points[k] is
+  // where particle ids[k] is now; the solid is at particles.predicted, and each point's ray
+  // starts at particles.position[ids[k]].
+  std::size_t resolvePoints(const Particles& particles, std::vector<Vec3>& points, std::span<const Index> ids,
+                            const ParticleTetSettings& settings);
+
   // Particles of [first, end) whose centre lies deeper than minDepth inside some tet, at
   // `positions` (solid and particles from the same array).
   std::size_t countInside(const std::vector<Vec3>& positions, Index first, Index end, Real minDepth,
@@ -52,6 +59,10 @@ class ParticleTetCollider {
 
  private:
   void rebuild(const std::vector<Vec3>& positions, Real padding);
+  // Pushes x (a particle that started this step at `previous`) out of the solid at positions
+  // p (start of step: `start`); true if it moved.
+  bool pushOut(const std::vector<Vec3>& p, const std::vector<Vec3>& start, Vec3& x, const Vec3& previous,
+               const ParticleTetSettings& settings) const;
   Vec3 nearestBoundaryExit(const std::vector<Vec3>& x, const Vec3& p, Real radius) const;
 
   std::vector<Tet> m_tets;                  // the solid's tets, vertex ids shifted to particle ids

@@ -40,7 +40,7 @@ void expectBadFluidInput(const std::string& args, const std::vector<std::string>
 // fluid-at-rest: a 10 cm column of blood (2,000 particles) after 3 s in a closed box.
 TEST(CliBlood, ColumnAtRestSettlesWithLowDensityErrorAndNothingLost) {
   const auto dir = scratchDir("blood_rest");
-  const nlohmann::json j = report(runHeartsim("run fluid-at-rest --json", dir));
+  const nlohmann::json j = report(runHeartsim("run fluid-at-rest --threads 1 --json", dir));
   const auto& b = j.at("blood");
   EXPECT_EQ(b.at("particles").get<int>(), 2000);
   EXPECT_EQ(b.at("lost").get<int>(), 0);
@@ -58,7 +58,7 @@ TEST(CliBlood, ColumnAtRestSettlesWithLowDensityErrorAndNothingLost) {
 TEST(CliBlood, MeshContainerKeepsTheBlood) {
   const auto dir = scratchDir("blood_mesh");
   const nlohmann::json j =
-      report(runHeartsim("run fluid-at-rest --set container.mesh=true --duration 1 --json", dir));
+      report(runHeartsim("run fluid-at-rest --set container.mesh=true --duration 1 --threads 1 --json", dir));
   EXPECT_EQ(j.at("blood").at("lost").get<int>(), 0);
   EXPECT_LE(j.at("blood").at("density_error_mean").get<double>(), 0.01);
 }

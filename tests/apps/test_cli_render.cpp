@@ -62,7 +62,8 @@ void expectImages(const fs::path& out, const std::vector<std::string>& names, bo
 }
 
 void expectBadInput(const std::string& args, const std::string& mustMention) {
-  const auto dir = scratchDir("render_bad");
+  // One folder per test: ctest runs tests in parallel processes.
+  const auto dir = scratchDir(std::string("render_bad_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
   const CliResult r = renderNoDisplay(args, dir);
   EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

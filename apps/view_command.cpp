@@ -1,0 +1,62 @@
+#include "view_command.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+#include "exit_codes.h"
+#include "io/scenario_file.h"
+#include "simulation_setup.h"
+#include "viewer/viewer_app.h"
+
+namespace hs::app {
+namespace {
+
+bool parseWindowSize(const std::string& text, int& width, int& height) {
+  constexpr int kMin = 200, kMax = 8192;
+  char x = 0, extra = 0;
+  return std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) == 3 && (x == 'x' || x == 'X') &&
+         width >= kMin && height >= kMin && width <= kMax && height <= kMax;
+}
+
+}  // namespace
+
+int viewCommand(const ViewOptions& options) {
+  viewer::ViewerOptions viewer;
+  if (!parseWindowSize(options.size, viewer.width, viewer.height)) {
+    std::cerr << "heartsim: error: --size: '" << options.size
+              << "' is not WIDTHxHEIGHT in pixels (e.g. 1280x800, each 200 to 8192)\n";
+    return kExitBadInput;
+  }
+  if (options.frames < 0) {
+    std::cerr << "heartsim: error: --frames: must be >= 0 (0 = until the window is closed)\n";
+    return kExitBadInput;
+  }
+  std::optional<cardiac::Scenario> scenario = loadScenarioOrReport(options.scenario, options.overrides);
+  if (!scenario) return kExitBadInput;
+  viewer.scenario = *scenario;
+  const std::vector<std::string> builtins = io::builtinScenarioNames();
+  if (std::find(builtins.begin(), builtins.end(), options.scenario) != builtins.end())
+    viewer.builtinName = options.scenario;
+  viewer.frames = options.frames;
+  viewer.screenshot = options.screenshot;
+  viewer.threads = options.threads > 0 ? options.threads : omp_get_num_procs();
+  try {
+    viewer::runViewer(viewer);
+  } catch (const viewer::DisplayError& e) {
+    std::cerr << "heartsim: error: " << e.what() << '\n';
+    return kExitFailure;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "heartsim: error: " << options.scenario << ": " << e.what() << '\n';
+    return kExitBadInput;
+  } catch (const std::runtime_error& e) {
+    std::cerr << "heartsim: error: " << e.what() << '\n';
+    return kExitFailure;
+  }
+  if (!options.screenshot.empty()) std::cerr << "heartsim: saved " << options.screenshot << '\n';
+  return kExitOk;
+}
+
+}  // namespace hs::app

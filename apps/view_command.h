@@ -1,0 +1,23 @@
+#pragma once
+// `heartsim view [SCENARIO|FILE.toml]`: the interactive viewer (docs/viewer.md). A window
+// shows the simulation as it runs, with a mouse camera and a control panel; --frames,
+// --screenshot and --size make it scriptable (tests, documentation images).
+#include <string>
+#include <vector>
+
+namespace hs::app {
+
+struct ViewOptions {
+  std::string scenario = "heart-only";
+  std::vector<std::string> overrides;  // --set KEY=VALUE
+  std::string size = "1280x800";       // WxH window pixels
+  int frames = 0;                      // > 0: quit after N frames
+  std::string screenshot;              // save the last frame as PNG
+  int threads = 0;                     // 0 = all cores
+};
+
+// Exit codes: 0 closed; 2 bad option or scenario (one line); 1 no display (one line saying
+// that `heartsim render` works without one) or a screenshot that cannot be written.
+int viewCommand(const ViewOptions& options);
+
+}  // namespace hs::app

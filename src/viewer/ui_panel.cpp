@@ -1,0 +1,235 @@
+#include "viewer/ui_panel.h"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "render/scene.h"
+
+namespace hs::viewer {
+namespace {
+
+void tooltip(const char* text) {
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+// ImGui 1.86 has no SeparatorText.
+void sectionTitle(const char* title) {
+  ImGui::Separator();
+  ImGui::TextDisabled("%s", title);
+}
+
+ImU32 colourU32(const render::Vec3f& c) { return ImGui::GetColorU32(ImVec4(c.x(), c.y(), c.z(), 1)); }
+
+// The blood colour scale as a horizontal bar, 0 on the left, speedMax on the right.
+void speedLegend(double speedMax) {
+  ImGui::TextUnformatted("Blood speed (m/s)");
+  const float width = ImGui::GetContentRegionAvail().x, height = 14;
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  constexpr int kSegments = 32;
+  for (int i = 0; i < kSegments; ++i) {
+    const float x0 = origin.x + width * float(i) / kSegments,
+                x1 = origin.x + width * float(i + 1) / kSegments;
+    const ImU32 left = colourU32(render::speedColour(double(i) / kSegments));
+    const ImU32 right = colourU32(render::speedColour(double(i + 1) / kSegments));
+    draw->AddRectFilledMultiColor(ImVec2(x0, origin.y), ImVec2(x1, origin.y + height), left, right, right,
+                                  left);
+  }
+  draw->AddRect(origin, ImVec2(origin.x + width, origin.y + height), IM_COL32(90, 90, 100, 255));
+  ImGui::Dummy(ImVec2(width, height));
+  char top[32], mid[32];
+  std::snprintf(top, sizeof top, "%g", speedMax);
+  std::snprintf(mid, sizeof mid, "%g", speedMax / 2);
+  ImGui::TextUnformatted("0");
+  ImGui::SameLine(width / 2 - ImGui::CalcTextSize(mid).x / 2);
+  ImGui::TextUnformatted(mid);
+  ImGui::SameLine(width - ImGui::CalcTextSize(top).x + ImGui::GetStyle().WindowPadding.x);
+  ImGui::TextUnformatted(top);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Blue = at rest, yellow = %g m/s or faster", speedMax);
+}
+
+void simulationSection(ViewerControls& c, const ViewerStatus& s) {
+  if (ImGui::Button(c.playing ? "Pause" : "Play", ImVec2(70, 0))) c.playing = !c.playing;
+  tooltip("Run or pause the simulation (Space)");
+  ImGui::SameLine();
+  if (ImGui::Button("Step", ImVec2(60, 0))) c.stepRequested = true;
+  char stepTip[96];
+  std::snprintf(stepTip, sizeof stepTip, "Advance one time step of %g ms and pause (S)", s.dt * 1000);
+  tooltip(stepTip);
+  ImGui::SameLine();
+  if (ImGui::Button("Reset", ImVec2(60, 0))) c.resetRequested = true;
+  tooltip("Restart the scenario from t = 0 (Backspace)");
+  ImGui::SliderFloat("speed", &c.speed, 0.01f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
+  tooltip("Simulated seconds per second of wall-clock time (1x = real time)");
+}
+
+void scenarioSection(ViewerControls& c, const ViewerStatus& s, const std::vector<std::string>& scenarios) {
+  const char* preview = c.scenarioIndex >= 0 && c.scenarioIndex < int(scenarios.size())
+                            ? scenarios[std::size_t(c.scenarioIndex)].c_str()
+                            : s.scenarioName.c_str();
+  if (ImGui::BeginCombo("scenario", preview)) {
+    for (int i = 0; i < int(scenarios.size()); ++i) {
+      const bool selected = i == c.scenarioIndex;
+      if (ImGui::Selectable(scenarios[std::size_t(i)].c_str(), selected) && !selected) {
+        c.scenarioIndex = i;
+        c.scenarioChanged = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  tooltip("Built-in scenario presets (scenarios/*.toml); choosing one restarts the simulation");
+  if (!s.hasHeart) return;
+  if (ImGui::Checkbox("cardiac cycle", &c.cycleEnabled)) c.cycleChanged = true;
+  tooltip("Let the wall beat (systole / diastole); changing it restarts the simulation");
+  ImGui::BeginDisabled(!c.cycleEnabled);
+  ImGui::SliderFloat("heart rate", &c.heartRateBpm, 30, 180, "%.0f bpm");
+  if (ImGui::IsItemDeactivatedAfterEdit()) c.cycleChanged = true;
+  tooltip(s.physiological
+              ? "Beats per minute (physiological timing); applied on release, restarts the simulation"
+              : "Beats per minute; switches the cycle to physiological timing (the scenario uses the "
+                "thesis's step-count timing) and restarts the simulation");
+  ImGui::EndDisabled();
+}
+
+void displaySection(ViewerControls& c, const ViewerStatus& s) {
+  if (s.hasHeart) {
+    ImGui::Checkbox("clipping plane", &c.clip);
+    tooltip("Cut the wall open to see into the cavity (removes what lies in front of the plane z = const)");
+    ImGui::BeginDisabled(!c.clip);
+    ImGui::SliderFloat("clip z", &c.clipZ, s.clipMin, s.clipMax, "%.3f m");
+    tooltip("Position of the cutting plane z = const (m); everything at larger z (anterior) is removed");
+    ImGui::EndDisabled();
+    ImGui::SliderFloat("wall opacity", &c.wallOpacity, 0.1f, 1.0f, "%.2f");
+    tooltip("Below 1 the wall is drawn see-through (0.1 to 1, no unit)");
+  }
+  ImGui::TextUnformatted("view");
+  ImGui::SameLine();
+  constexpr struct {
+    const char* label;
+    render::View view;
+    const char* tip;
+  } kViews[] = {{"front", render::View::Front, "Anterior view, from +z (1 or F)"},
+                {"left", render::View::Left, "From -x, the septal side (2 or L)"},
+                {"right", render::View::Right, "From +x, the lateral side (3)"},
+                {"top", render::View::Top, "From +y onto the base (4 or T)"}};
+  for (const auto& v : kViews) {
+    if (ImGui::SmallButton(v.label)) c.viewRequested = v.view;
+    tooltip(v.tip);
+    ImGui::SameLine();
+  }
+  if (ImGui::SmallButton("reset")) c.resetCameraRequested = true;
+  tooltip("Back to the front view, framing the heart (R)");
+  if (ImGui::Button("Screenshot")) c.screenshotRequested = true;
+  tooltip("Save the window as a PNG in the working directory (P)");
+  ImGui::SameLine();
+  if (ImGui::Button("Help")) c.showHelp = !c.showHelp;
+  tooltip("Mouse and keys (H or F1)");
+}
+
+}  // namespace
+
+std::string realTimeWarning(const ViewerStatus& status) {
+  if (!status.behind) return "";
+  char text[64];
+  std::snprintf(text, sizeof text, "running at %.2gx real time", status.realTimeFactor);
+  return text;
+}
+
+void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
+                      const std::vector<std::string>& scenarios, int windowHeight) {
+  ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, float(windowHeight)), ImGuiCond_Always);
+  ImGui::Begin("heartsim", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoTitleBar);
+  ImGui::PushItemWidth(-90);
+  ImGui::TextUnformatted("heartsim viewer");
+  ImGui::Separator();
+  simulationSection(controls, status);
+  ImGui::Spacing();
+  sectionTitle("Scenario");
+  scenarioSection(controls, status, scenarios);
+  ImGui::Spacing();
+  sectionTitle("Display");
+  displaySection(controls, status);
+  if (status.hasHeart) {
+    ImGui::Spacing();
+    sectionTitle("Wall colours");
+    ImGui::TextColored(ImVec4(0.85f, 0.3f, 0.32f, 1), "red");
+    ImGui::SameLine();
+    ImGui::TextUnformatted("myocardium, dark red: cut face");
+    ImGui::TextUnformatted("light: base plate and vessels");
+  }
+  if (status.hasBlood) {
+    ImGui::Spacing();
+    speedLegend(status.speedMax);
+  }
+  if (!status.message.empty()) {
+    ImGui::Spacing();
+    ImGui::Separator();
+    ImGui::TextWrapped("%s", status.message.c_str());
+  }
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+void drawStatusOverlay(const ViewerStatus& status, int windowWidth) {
+  constexpr float kMargin = 10;
+  ImGui::SetNextWindowPos(ImVec2(float(windowWidth) - kMargin, kMargin), ImGuiCond_Always, ImVec2(1, 0));
+  ImGui::SetNextWindowBgAlpha(0.75f);
+  ImGui::Begin("status", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                   ImGuiWindowFlags_NoNav);
+  ImGui::Text("%s", status.scenarioName.c_str());
+  ImGui::Text("t = %.3f s", status.time);
+  if (*status.phase) ImGui::Text("phase: %s", status.phase);
+  // The thesis-scale models are metres across: their volumes read better in m^3.
+  if (status.cavityMl >= 1e4)
+    ImGui::Text("cavity volume: %.3g m^3 (thesis scale)", status.cavityMl * 1e-6);
+  else if (status.cavityMl >= 0)
+    ImGui::Text("cavity volume: %.1f mL", status.cavityMl);
+  ImGui::Text("frame: %.1f ms", status.frameMs);
+  if (const std::string warning = realTimeWarning(status); !warning.empty())
+    ImGui::TextColored(ImVec4(0.95f, 0.55f, 0.15f, 1), "%s", warning.c_str());
+  ImGui::End();
+}
+
+void drawHelpWindow(bool& open, int windowWidth, int windowHeight) {
+  if (!open) return;
+  ImGui::SetNextWindowPos(ImVec2(float(windowWidth) / 2 + kPanelWidth / 2, float(windowHeight) / 2),
+                          ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::Begin("Help: mouse and keys", &open,
+               ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+  constexpr const char* kRows[][2] = {
+      {"left drag", "orbit around the heart"},
+      {"right or middle drag", "pan"},
+      {"wheel", "zoom"},
+      {"1 / F", "front view (anterior, from +z)"},
+      {"2 / L", "left view (from -x, septal side)"},
+      {"3", "right view (from +x, lateral side)"},
+      {"4 / T", "top view (onto the base)"},
+      {"R", "reset the camera"},
+      {"Space", "play / pause"},
+      {"S", "single step (pauses)"},
+      {"Backspace", "restart the scenario"},
+      {"P", "screenshot (PNG in the working directory)"},
+      {"H / F1", "this help"},
+      {"Esc", "quit"},
+  };
+  if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
+    for (const auto& row : kRows) {
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      ImGui::TextUnformatted(row[0]);
+      ImGui::TableSetColumnIndex(1);
+      ImGui::TextUnformatted(row[1]);
+    }
+    ImGui::EndTable();
+  }
+  ImGui::End();
+}
+
+}  // namespace hs::viewer

@@ -1,0 +1,63 @@
+#pragma once
+// The viewer's Dear ImGui windows: the control panel (left), the status corner (top right)
+// and the help window. They only read a ViewerStatus and write requests into ViewerControls;
+// ViewerApp acts on the requests between frames, so nothing here touches the simulation.
+// Needs an ImGui frame in progress (between ImGui::NewFrame and ImGui::Render).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/renderer.h"
+
+namespace hs::viewer {
+
+// What the user set; the *Requested / *Changed flags are one-frame requests, cleared by the app.
+struct ViewerControls {
+  bool playing = true;
+  float speed = 1;         // simulated seconds per wall-clock second
+  int scenarioIndex = -1;  // into the scenario list; -1: a file given on the command line
+  bool cycleEnabled = true;
+  float heartRateBpm = 72;  // physiological mode
+  bool clip = true;
+  float clipZ = 0;  // m: what lies at z > clipZ is cut away
+  float wallOpacity = 1;
+  bool showHelp = false;
+
+  bool stepRequested = false;
+  bool resetRequested = false;
+  bool scenarioChanged = false;
+  bool cycleChanged = false;  // cycle on/off or the heart rate: restarts the simulation
+  bool screenshotRequested = false;
+  bool resetCameraRequested = false;
+  std::optional<render::View> viewRequested;
+};
+
+// What the panels show.
+struct ViewerStatus {
+  std::string scenarioName;
+  double time = 0;            // s, simulated
+  double dt = 0;              // s per step
+  const char* phase = "";     // "systole", "diastole", "rest" or "" (no beating heart)
+  double cavityMl = -1;       // < 0: no heart
+  double frameMs = 0;         // wall time per frame, smoothed
+  double realTimeFactor = 1;  // simulated / wall seconds achieved, smoothed
+  bool behind = false;        // the step budget could not keep up with the requested speed
+  bool hasHeart = false, hasBlood = false;
+  bool physiological = false;       // cycle timing mode (heart rate applies)
+  double speedMax = 1;              // m/s at the top of the blood colour scale
+  float clipMin = -1, clipMax = 1;  // range of the clipping plane's slider (m)
+  std::string message;              // last event: "saved viewer.png", "simulation became invalid ..."
+};
+
+// Width of the control panel in pixels (the camera frames the rest of the window).
+inline constexpr float kPanelWidth = 300;
+
+void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
+                      const std::vector<std::string>& scenarios, int windowHeight);
+void drawStatusOverlay(const ViewerStatus& status, int windowWidth);
+void drawHelpWindow(bool& open, int windowWidth, int windowHeight);
+
+// "running at 0.4x real time" when behind, else "".
+std::string realTimeWarning(const ViewerStatus& status);
+
+}  // namespace hs::viewer

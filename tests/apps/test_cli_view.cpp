@@ -1,0 +1,193 @@
+// `heartsim view` under a virtual X server (Xvfb): scripted with --frames and --screenshot it
+// opens its window, runs, and saves a PNG that shows the heart (the wall's red) or the blood;
+// without a display it stops with exit 1 and one line pointing to `heartsim render`; a bad
+// --size or scenario stops it with exit 2 before any window is opened.
+#include <gtest/gtest.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "cli_runner.h"
+#include "viz/image.h"
+
+namespace {
+
+using hs::testing::CliResult;
+using hs::testing::runHeartsim;
+using hs::testing::scratchDir;
+namespace fs = std::filesystem;
+
+std::optional<std::string> findXvfb() {
+  for (const char* dir : {"/usr/bin", "/usr/local/bin", "/bin"}) {
+    const fs::path candidate = fs::path(dir) / "Xvfb";
+    if (fs::exists(candidate)) return candidate.string();
+  }
+  return std::nullopt;
+}
+
+// DISPLAY for the child processes, set and restored around one call.
+class ScopedDisplay {
+ public:
+  explicit ScopedDisplay(const std::optional<std::string>& display) {
+    if (const char* old = std::getenv("DISPLAY")) m_old = old;
+    if (display)
+      setenv("DISPLAY", display->c_str(), 1);
+    else
+      unsetenv("DISPLAY");
+  }
+  ~ScopedDisplay() {
+    if (m_old)
+      setenv("DISPLAY", m_old->c_str(), 1);
+    else
+      unsetenv("DISPLAY");
+  }
+  ScopedDisplay(const ScopedDisplay&) = delete;
+  ScopedDisplay& operator=(const ScopedDisplay&) = delete;
+
+ private:
+  std::optional<std::string> m_old;
+};
+
+// One Xvfb server per test process, on a display number Xvfb chooses.
+class ViewUnderXvfb : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    const std::optional<std::string> xvfb = findXvfb();
+    if (!xvfb) {
+      s_skipReason = "Xvfb is not installed (apt-get install xvfb, see scripts/install-deps.sh)";
+      return;
+    }
+    // Xvfb picks a free display itself and writes its number to a pipe (-displayfd): ctest
+    // runs tests in parallel processes, and choosing a number here would race.
+    int fds[2];
+    if (pipe(fds) != 0) {
+      s_skipReason = "could not create a pipe for Xvfb";
+      return;
+    }
+    const pid_t pid = fork();
+    if (pid == 0) {
+      close(fds[0]);
+      freopen("/dev/null", "w", stdout);
+      freopen("/dev/null", "w", stderr);
+      const std::string fd = std::to_string(fds[1]);
+      execl(xvfb->c_str(), "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x1024x24", "-nolisten", "tcp",
+            static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    close(fds[1]);
+    std::string number;
+    pollfd poller{fds[0], POLLIN, 0};
+    char c = 0;
+    while (poll(&poller, 1, 10000) > 0 && read(fds[0], &c, 1) == 1 && c != '\n') number += c;
+    close(fds[0]);
+    if (!number.empty()) {
+      s_pid = pid;
+      s_display = ":" + number;
+    } else if (pid > 0) {
+      kill(pid, SIGTERM);
+      waitpid(pid, nullptr, 0);
+    }
+    if (s_pid <= 0) s_skipReason = "could not start Xvfb (no display number reported within 10 s)";
+  }
+  static void TearDownTestSuite() {
+    if (s_pid > 0) {
+      kill(s_pid, SIGTERM);
+      waitpid(s_pid, nullptr, 0);
+      s_pid = -1;
+    }
+  }
+  void SetUp() override {
+    if (!s_skipReason.empty()) GTEST_SKIP() << s_skipReason;
+  }
+  static CliResult view(const std::string& args, const fs::path& dir) {
+    ScopedDisplay display(s_display);
+    return runHeartsim("view " + args, dir);
+  }
+
+  static inline pid_t s_pid = -1;
+  static inline std::string s_display;
+  static inline std::string s_skipReason;
+};
+
+double variance(const hs::viz::Image& image) {
+  double sum = 0, sumSq = 0;
+  for (const std::uint8_t v : image.pixels()) {
+    sum += v;
+    sumSq += double(v) * v;
+  }
+  const double n = double(image.pixels().size());
+  return sumSq / n - (sum / n) * (sum / n);
+}
+
+template <class Pred>
+int countPixels(const hs::viz::Image& image, Pred pred) {
+  int n = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) n += pred(image.at(x, y)) ? 1 : 0;
+  return n;
+}
+
+bool wallRed(hs::viz::Rgb c) { return c.r > 110 && c.r > c.g + 60 && c.r > c.b + 50; }
+bool bloodBlue(hs::viz::Rgb c) { return c.b > 120 && c.b > c.r + 60 && c.b > c.g + 30; }
+
+TEST_F(ViewUnderXvfb, HeartOnlyScreenshotShowsTheWall) {
+  const fs::path dir = scratchDir("view_heart");
+  const CliResult r = view("heart-only --frames 60 --screenshot s.png --size 640x480", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_TRUE(fs::exists(dir / "s.png")) << r.err;
+  const hs::viz::Image image = hs::viz::Image::loadPng((dir / "s.png").string());
+  EXPECT_EQ(image.width(), 640);
+  EXPECT_EQ(image.height(), 480);
+  EXPECT_GT(variance(image), 200.0);
+  // The wall covers a good part of the scene beside the panel.
+  EXPECT_GT(countPixels(image, wallRed), 640 * 480 / 20);
+}
+
+TEST_F(ViewUnderXvfb, FluidAtRestScreenshotShowsTheBlood) {
+  const fs::path dir = scratchDir("view_fluid");
+  const CliResult r = view("fluid-at-rest --frames 20 --screenshot s.png --size 640x480", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const hs::viz::Image image = hs::viz::Image::loadPng((dir / "s.png").string());
+  EXPECT_GT(variance(image), 200.0);
+  EXPECT_GT(countPixels(image, bloodBlue), 640 * 480 / 20);
+  // No heart in this scenario: only the panel's few orange or red letters.
+  EXPECT_LT(countPixels(image, wallRed), 640 * 480 / 200);
+}
+
+TEST_F(ViewUnderXvfb, BadSizeAndUnknownScenarioAreRejectedWithOneLine) {
+  const fs::path dir = scratchDir("view_bad");
+  for (const std::string args :
+       {"heart-only --size 12x9000", "heart-only --size big", "no-such-scenario --frames 1"}) {
+    const CliResult r = view(args, dir);
+    EXPECT_EQ(r.exitCode, 2) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+}
+
+TEST(ViewWithoutDisplay, ExitsOneSayingADisplayIsNeededAndRenderWorksWithout) {
+  const fs::path dir = scratchDir("view_no_display");
+  ScopedDisplay none(std::nullopt);
+  const CliResult r = runHeartsim("view heart-only --frames 1", dir);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("display"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("heartsim render"), std::string::npos) << r.err;
+}
+
+TEST(ViewWithoutDisplay, BadSizeIsStillExitTwo) {
+  const fs::path dir = scratchDir("view_no_display_size");
+  ScopedDisplay none(std::nullopt);
+  const CliResult r = runHeartsim("view heart-only --size 0x0", dir);
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+}
+
+}  // namespace
