@@ -85,6 +85,7 @@ pbd::FluidStepSettings bloodSolverSettings(const Scenario& scenario, int threads
   f.xsphViscosity = b.xsph * f.particleMass / b.restDensity;  // c = gamma m / rho0
   f.kinematicViscosity = b.viscosity / b.restDensity;         // nu = mu / rho0
   f.vorticityConfinement = b.vorticity;
+  f.maxCorrection = Real(0.5) * b.spacing;  // see fluid.h; inactive in the box scenarios
   s.particleRadius = b.radius;
   if (scenario.container.enabled && !scenario.container.mesh)
     s.walls = pbd::boxWalls(scenario.container.min, scenario.container.max);

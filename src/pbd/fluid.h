@@ -73,6 +73,11 @@ struct FluidSettings {
   // epsilon of PBF eq. 16 (vorticity confinement): the acceleration is eps (N x omega) with
   // omega in 1/s, so eps is in m/s. 0 switches it off.
   Real vorticityConfinement = 0;
+  // m: the longest density correction a particle may take in one iteration; 0 = no limit.
+  // A heavily compressed particle (blood squeezed against a moving wall) gets a Newton step
+  // of lambda grad C far longer than its neighbourhood, and would jump through a thin wall
+  // in one iteration; PBF's linearisation is only valid for steps small against h.
+  Real maxCorrection = 0;
 };
 
 // Mass of one particle of a cubic lattice at rest: m = rho0 d^3 (one particle per d^3 cell).

@@ -72,6 +72,7 @@ void FluidSolver::projectDensity(Particles& particles) {
   m_grid.buildSlotNeighbourLists(fluid.supportRadius, m_lists);
   const std::vector<Index>& sorted = m_grid.sortedIndices();
   const StaticMeshCollider* const mesh = m_settings.mesh.get();
+  const Real maxCorrection = fluid.maxCorrection;
   m_slotParticle.resize(m_fluid.size());
   m_p.resize(m_fluid.size());
   m_w.resize(m_fluid.size());
@@ -96,7 +97,10 @@ void FluidSolver::projectDensity(Particles& particles) {
 #pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
     for (std::ptrdiff_t s = 0; s < n; ++s) {
       if (m_w[s] <= Real(0)) continue;  // pinned
-      Vec3 p = m_p[s] + m_dp[s];
+      Vec3 dp = m_dp[s];
+      const Real dp2 = dp.squaredNorm();
+      if (maxCorrection > Real(0) && dp2 > maxCorrection * maxCorrection) dp *= maxCorrection / std::sqrt(dp2);
+      Vec3 p = m_p[s] + dp;
       for (const Plane& plane : walls) p += projectPlaneCollision(p, m_w[s], plane, radius);
       if (mesh) p = mesh->collide(m_x[s], p, radius);
       m_p[s] = p;

@@ -162,3 +162,39 @@ TEST(FluidSolver, StepsAreBitwiseIdenticalForOneAndTwoThreads) {
 
 }  // namespace
 }  // namespace hs::pbd
+
+namespace hs::pbd {
+namespace {
+
+// FluidSettings::maxCorrection caps each particle's density correction per iteration (a
+// blob squeezed to half its spacing would otherwise take Newton steps longer than a wall is
+// thick); off, the same blob takes longer steps than the cap.
+TEST(FluidSolver, MaxCorrectionCapsTheStepOfACompressedBlob) {
+  auto longestMove = [](Real cap) {
+    Particles particles;
+    for (const Vec3& x : fluidBlock(Vec3::Zero(), Real(0.5) * kSpacing * Vec3(8, 8, 8), Real(0.5) * kSpacing))
+      particles.add(x, Real(1) / particleMassFor(kRho0, kSpacing), ParticleKind::Fluid);
+    FluidStepSettings s;
+    s.base.gravity = Vec3::Zero();
+    s.iterations = 1;
+    s.fluid.restDensity = kRho0;
+    s.fluid.particleMass = particleMassFor(kRho0, kSpacing);
+    s.fluid.supportRadius = 2 * kSpacing;
+    s.fluid.maxCorrection = cap;
+    FluidSolver solver(s);
+    const std::vector<Vec3> before = particles.predicted;
+    solver.projectDensity(particles);
+    Real longest = 0;
+    for (std::size_t i = 0; i < before.size(); ++i) longest = std::max(longest, (particles.predicted[i] - before[i]).norm());
+    return longest;
+  };
+  const Real cap = Real(0.01);
+  const Real free = longestMove(0), capped = longestMove(cap);
+  EXPECT_GT(free, 2 * cap);
+  EXPECT_LE(capped, cap * (1 + Real(1e-5)));
+  std::printf("compressed blob: longest first correction %.4f m free, %.4f m capped at %.4f\n", double(free),
+              double(capped), double(cap));
+}
+
+}  // namespace
+}  // namespace hs::pbd
