@@ -1,6 +1,8 @@
 // heartsim: the command-line entry point. Subcommands: run, view, render, bench, validate.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "bench_command.h"
 #include "exit_codes.h"
@@ -9,6 +11,21 @@
 #include "validate_command.h"
 #include "version.h"
 #include "view_command.h"
+
+namespace {
+
+// Options several subcommands share, with one wording and one range.
+void addThreadsOption(CLI::App* command, int& threads) {
+  command->add_option("--threads", threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+}
+
+void addSetOption(CLI::App* command, std::vector<std::string>& overrides, const char* example = "cycle.beats=2") {
+  command->add_option("--set", overrides, std::string("Override a scenario key: --set ") + example + " (repeatable)")
+      ->take_all()
+      ->expected(1);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace hs::app;
@@ -21,13 +38,11 @@ int main(int argc, char** argv) {
   CLI::App* runApp = app.add_subcommand("run", "Run a scenario headless and write its results");
   runApp->add_option("scenario", run.scenario, "Built-in scenario name or path to a .toml file")->required();
   runApp->add_option("--duration", duration, "Simulated time (s), overrides simulation.duration");
-  runApp->add_option("--threads", run.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  addThreadsOption(runApp, run.threads);
   runApp->add_option("--out", run.outDir, "Output directory (default: results/<scenario>)");
   runApp->add_flag("--json", run.json, "Print one JSON summary object on stdout");
   runApp->add_flag("--vtk", run.vtk, "Write VTK frames and a .pvd series for ParaView");
-  runApp->add_option("--set", run.overrides, "Override a scenario key: --set cycle.beats=2 (repeatable)")
-      ->take_all()
-      ->expected(1);
+  addSetOption(runApp, run.overrides);
 
   RenderOptions render;
   bool renderClip = true;
@@ -42,10 +57,8 @@ int main(int argc, char** argv) {
   renderApp->add_option("--wall-opacity", render.wallOpacity, "Wall opacity in (0, 1]; below 1 the wall is see-through")
       ->capture_default_str();
   renderApp->add_option("--speed-max", render.speedMax, "Blood speed (m/s) at the top of the colour scale (0: from the scenario)");
-  renderApp->add_option("--threads", render.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
-  renderApp->add_option("--set", render.overrides, "Override a scenario key: --set cycle.beats=2 (repeatable)")
-      ->take_all()
-      ->expected(1);
+  addThreadsOption(renderApp, render.threads);
+  addSetOption(renderApp, render.overrides);
 
   ViewOptions view;
   CLI::App* viewApp = app.add_subcommand("view", "Open the interactive viewer: watch, steer and photograph a scenario");
@@ -53,15 +66,13 @@ int main(int argc, char** argv) {
   viewApp->add_option("--size", view.size, "Window size, WIDTHxHEIGHT pixels")->capture_default_str();
   viewApp->add_option("--frames", view.frames, "Quit after N frames (scripted use; 0 = until closed)");
   viewApp->add_option("--screenshot", view.screenshot, "Save the last frame as this PNG file");
-  viewApp->add_option("--threads", view.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
-  viewApp->add_option("--set", view.overrides, "Override a scenario key: --set cycle.beats=2 (repeatable)")
-      ->take_all()
-      ->expected(1);
+  addThreadsOption(viewApp, view.threads);
+  addSetOption(viewApp, view.overrides);
 
   BenchOptions bench;
   CLI::App* benchApp = app.add_subcommand("bench", "End-to-end throughput benchmarks");
   benchApp->add_option("--case", bench.cases, "Case to run (repeatable; default: all)")->expected(1)->take_all();
-  benchApp->add_option("--threads", bench.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  addThreadsOption(benchApp, bench.threads);
   benchApp->add_option("--seconds", bench.seconds, "Measuring time per case (s)")->check(CLI::Range(0.1, 600.0));
   benchApp->add_flag("--json", bench.json, "Print one JSON object on stdout");
 
@@ -72,12 +83,9 @@ int main(int argc, char** argv) {
       validateApp->add_subcommand("dam-break", "Surge front of a collapsing column vs Martin & Moyce (1952), n^2 = 2");
   damBreakApp->add_option("--scenario", validate.scenario, "Built-in scenario name or path to a .toml file")
       ->capture_default_str();
-  damBreakApp->add_option("--set", validate.overrides, "Override a scenario key: --set blood.iterations=6 (repeatable)")
-      ->take_all()
-      ->expected(1);
+  addSetOption(damBreakApp, validate.overrides, "blood.iterations=6");
   damBreakApp->add_option("--out", validate.outDir, "Output directory")->capture_default_str();
-  damBreakApp->add_option("--threads", validate.threads, "Worker threads (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+  addThreadsOption(damBreakApp, validate.threads);
   damBreakApp->add_flag("--json", validate.json, "Print one JSON report object on stdout");
 
   try {

@@ -63,14 +63,8 @@ double physicalMemoryBytes() {
 
 }  // namespace
 
-pbd::FluidStepSettings bloodSolverSettings(const Scenario& scenario, int threads) {
-  const BloodSettings& b = scenario.blood;
-  pbd::FluidStepSettings s;
-  s.base.dt = scenario.simulation.dt;
-  s.base.gravity = scenario.simulation.gravity;
-  s.base.threads = threads;
-  s.iterations = b.iterations;
-  pbd::FluidSettings& f = s.fluid;
+pbd::FluidSettings bloodFluidSettings(const BloodSettings& b) {
+  pbd::FluidSettings f;
   f.restDensity = b.restDensity;
   f.particleMass = pbd::particleMassFor(b.restDensity, b.spacing);
   f.supportRadius = b.supportRadius;
@@ -86,6 +80,18 @@ pbd::FluidStepSettings bloodSolverSettings(const Scenario& scenario, int threads
   f.kinematicViscosity = b.viscosity / b.restDensity;         // nu = mu / rho0
   f.vorticityConfinement = b.vorticity;
   f.maxCorrection = Real(0.5) * b.spacing;  // see fluid.h; inactive in the box scenarios
+  return f;
+}
+
+pbd::FluidStepSettings bloodSolverSettings(const Scenario& scenario, int threads) {
+  const BloodSettings& b = scenario.blood;
+  pbd::FluidStepSettings s;
+  s.base.dt = scenario.simulation.dt;
+  s.base.gravity = scenario.simulation.gravity;
+  s.base.threads = threads;
+  s.iterations = b.iterations;
+  s.fluid = bloodFluidSettings(b);
+  const pbd::FluidSettings& f = s.fluid;
   s.particleRadius = b.radius;
   if (scenario.container.enabled && !scenario.container.mesh)
     s.walls = pbd::boxWalls(scenario.container.min, scenario.container.max);
@@ -162,11 +168,7 @@ BloodStats measureBlood(const Scenario& scenario, const pbd::Particles& particle
                         const Vec3& domainMax, int threads) {
   const BloodSettings& b = scenario.blood;
   BloodStats stats;
-  pbd::FluidSettings fluid;
-  fluid.restDensity = b.restDensity;
-  fluid.particleMass = pbd::particleMassFor(b.restDensity, b.spacing);
-  fluid.supportRadius = b.supportRadius;
-  const pbd::FluidStats f = pbd::measureFluid(particles, fluid, b.spacing, threads);
+  const pbd::FluidStats f = pbd::measureFluid(particles, bloodFluidSettings(b), b.spacing, threads);
   stats.particles = f.fluidCount;
   stats.densityErrorMean = double(f.densityErrorMean);
   stats.densityErrorMax = double(f.densityErrorMax);

@@ -13,6 +13,10 @@ namespace hs::cardiac {
 
 using pbd::Vec3;
 
+// The fluid's own parameters for the scenario's blood (the part of bloodSolverSettings that
+// measurements need too).
+pbd::FluidSettings bloodFluidSettings(const BloodSettings& blood);
+
 // Solver settings for the scenario's blood (thesis 4.2 with the constants of Table 5.2):
 //   m = rho0 d^3 (one particle per lattice cell at rest, docs/thesis-deviations.md),
 //   XSPH c = gamma m / rho0 (thesis eq. 4.11), nu = mu / rho0,
