@@ -81,6 +81,14 @@ class FluidSolver {
   std::span<const Index> slotParticles() const { return m_slotParticle; }
   const NeighbourLists& neighbourLists() const { return m_lists; }
   const std::vector<Real>& densities() const { return m_density; }
+  // Pressure (Pa) of each particle in the last projectDensity, indexed by particle (0 for
+  // non-fluid particles). The density solve is a pressure solve in disguise: PBF's correction
+  // dx_i = (m/rho0) sum_j (lambda_i + lambda_j) grad W_ij (eq. 12) equals dt^2 times the
+  // symmetric SPH pressure acceleration -m sum_j (p_i + p_j)/rho0^2 grad W_ij (Monaghan 2005
+  // eq. 3.13 at rho = rho0) when p_i = -(rho0/dt^2) lambda_i; summed over the iterations it
+  // is the pressure that kept the fluid at rest density during the step. Gauge: 0 at a free
+  // surface; with the one-sided constraint (unilateralDensity) it is never negative.
+  const std::vector<Real>& pressures() const { return m_pressure; }
 
  private:
   static constexpr std::size_t kNotIndexed = ~std::size_t(0);
@@ -102,6 +110,8 @@ class FluidSolver {
   NeighbourLists m_lists;          // over slots
   std::vector<Real> m_density;
   std::vector<Real> m_lambda;
+  std::vector<Real> m_lambdaSum;   // slot: sum of lambda over the iterations of the step
+  std::vector<Real> m_pressure;    // particle: see pressures()
   std::vector<Real> m_pairGradient;  // spiky gradient scale per list entry, reused in a pass
   std::vector<Vec3> m_dp;
   std::vector<Vec3> m_v;           // slot velocities (viscosity input)
