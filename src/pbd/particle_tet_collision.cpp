@@ -22,6 +22,26 @@ std::vector<Tet> shifted(std::vector<Tet> tets, Index offset) {
 
 }  // namespace
 
+TwoWayPushOut splitPushOut(const Vec3& d, Real particleInverseMass, const std::array<Real, 3>& weights,
+                           const std::array<Real, 3>& wallInverseMass) {
+  // C = n . (x_p - sum_i b_i x_i) - (C_0 + |d|) with n = d / |d|: grad_p C = n, grad_i C =
+  // -b_i n, so the PBD step (Müller et al. 2007, eq. 9-10 with |grad C|^2 weighted by w)
+  // s = |d| / (w_p + sum_i b_i^2 w_i) gives dx_p = w_p s n = w_p k d and
+  // dx_i = -w_i b_i s n = -w_i b_i k d, k = 1 / (w_p + sum_i b_i^2 w_i); using d directly
+  // avoids normalising it. The relative motion n . (dx_p - sum_i b_i dx_i) is |d|, as in the
+  // one-way case; sum_i m_i dx_i = -(sum_{w_i>0} b_i) m_p dx_p.
+  TwoWayPushOut out;
+  out.particle = d;
+  Real wall = 0;
+  for (std::size_t k = 0; k < 3; ++k) wall += weights[k] * weights[k] * wallInverseMass[k];
+  if (!(wall > Real(0)) || !(particleInverseMass > Real(0))) return out;
+  const Real scale = Real(1) / (particleInverseMass + wall);
+  out.particle = (particleInverseMass * scale) * d;
+  for (std::size_t k = 0; k < 3; ++k) out.wall[k] = -(wallInverseMass[k] * weights[k] * scale) * d;
+  out.shared = true;
+  return out;
+}
+
 ParticleTetCollider::ParticleTetCollider(std::vector<Tet> tets, Index firstVertex)
     : m_tets(shifted(std::move(tets), firstVertex)),
       m_exitFaces(tetBoundaryFaceMasks(m_tets)),
@@ -29,8 +49,10 @@ ParticleTetCollider::ParticleTetCollider(std::vector<Tet> tets, Index firstVerte
 
 // Last resort for a particle no tet-by-tet push could free: the closest point q of the
 // boundary surface, and p* = q + radius n with n that face's outward normal. Brute force over
-// the boundary: it runs only for such particles (none in the tests' LV runs).
-Vec3 ParticleTetCollider::nearestBoundaryExit(const std::vector<Vec3>& x, const Vec3& p, Real radius) const {
+// the boundary: it runs only for such particles (none in the tests' LV runs). The wall point
+// pushed away from is q.
+Vec3 ParticleTetCollider::nearestBoundaryExit(const std::vector<Vec3>& x, const Vec3& p, Real radius,
+                                              WallContact& contact) const {
   Real best = std::numeric_limits<Real>::infinity();
   Vec3 result = p;
   for (const Triangle& f : m_boundary) {
@@ -42,6 +64,8 @@ Vec3 ParticleTetCollider::nearestBoundaryExit(const std::vector<Vec3>& x, const 
     if (!(len > Real(0))) continue;
     best = d2;
     result = q + (radius / len) * n;
+    contact.vertices = f;
+    contact.weights = triangleWeights(q, x[f[0]], x[f[1]], x[f[2]]);
   }
   return result;
 }
@@ -56,7 +80,8 @@ void ParticleTetCollider::rebuild(const std::vector<Vec3>& positions, Real paddi
 }
 
 bool ParticleTetCollider::pushOut(const std::vector<Vec3>& p, const std::vector<Vec3>& start, Vec3& x,
-                                  const Vec3& previous, const ParticleTetSettings& settings) const {
+                                  const Vec3& previous, const ParticleTetSettings& settings,
+                                  WallContact& contact) const {
   bool changed = false;
   // While walking back along the ray through interior faces, the entry point of the last tet
   // and the ray's unit direction: the particle must end `radius` beyond the entry into the
@@ -86,6 +111,9 @@ bool ParticleTetCollider::pushOut(const std::vector<Vec3>& p, const std::vector<
     changed = true;
     walking = false;
     x = out.position;
+    const auto& face = kTetFaceVertices[std::size_t(out.face)];
+    for (std::size_t k = 0; k < 3; ++k) contact.vertices[k] = m_tets[t][std::size_t(face[k])];
+    contact.weights = out.faceWeights;
     if (out.alongRay && !(m_exitFaces[t] & (1u << out.face))) {
       // Entered through an inner face: step just across it into the tet the ray came from
       // and push again from there (eq. 4.20 measured from the solid's surface).
@@ -95,7 +123,7 @@ bool ParticleTetCollider::pushOut(const std::vector<Vec3>& p, const std::vector<
       walking = true;
     }
     if (pass + 1 == settings.maxPasses) {
-      x = nearestBoundaryExit(p, x, settings.radius);
+      x = nearestBoundaryExit(p, x, settings.radius, contact);
       walking = false;
     }
   }
@@ -108,25 +136,46 @@ bool ParticleTetCollider::pushOut(const std::vector<Vec3>& p, const std::vector<
 std::size_t ParticleTetCollider::resolve(Particles& particles, Index first, Index end,
                                          const ParticleTetSettings& settings) {
   std::vector<Vec3>& p = particles.predicted;
+  const std::vector<Real>& w = particles.inverseMass;
   rebuild(p, Real(1e-3) * settings.radius);
   const std::ptrdiff_t count = std::ptrdiff_t(end) - std::ptrdiff_t(first);
+  // Two-way: each iteration fills only its own slot; the wall is read, never written, in the
+  // parallel loop.
+  if (settings.twoWay)
+    m_wallCorrections.assign(std::size_t(std::max<std::ptrdiff_t>(count, 0)), WallCorrection{});
   std::size_t moved = 0;
 #pragma omp parallel for schedule(static) num_threads(settings.threads) reduction(+ : moved) \
     if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = first + Index(s);
-    if (particles.inverseMass[i] <= Real(0)) continue;
+    if (w[i] <= Real(0)) continue;
     Vec3 x = p[i];
-    if (pushOut(p, particles.position, x, particles.position[i], settings)) {
-      p[i] = x;
-      ++moved;
+    WallContact contact;
+    if (!pushOut(p, particles.position, x, particles.position[i], settings, contact)) continue;
+    ++moved;
+    if (settings.twoWay) {
+      const std::array<Real, 3> wallW{w[contact.vertices[0]], w[contact.vertices[1]], w[contact.vertices[2]]};
+      const TwoWayPushOut split = splitPushOut(x - p[i], w[i], contact.weights, wallW);
+      if (split.shared) {
+        x = p[i] + split.particle;
+        m_wallCorrections[std::size_t(s)] = {contact.vertices, split.wall, true};
+      }
     }
+    p[i] = x;
   }
+  // The wall's reactions, by one thread in particle order: every vertex gets the same sum, in
+  // the same order, for any thread count. Pinned vertices are skipped, not even given a zero.
+  if (settings.twoWay)
+    for (const WallCorrection& c : m_wallCorrections)
+      if (c.active)
+        for (std::size_t k = 0; k < 3; ++k)
+          if (w[c.vertices[k]] > Real(0)) p[c.vertices[k]] += c.delta[k];
   return moved;
 }
 
 std::size_t ParticleTetCollider::resolvePoints(const Particles& particles, std::vector<Vec3>& points,
-                                               std::span<const Index> ids, const ParticleTetSettings& settings) {
+                                               std::span<const Index> ids,
+                                               const ParticleTetSettings& settings) {
   rebuild(particles.predicted, Real(1e-3) * settings.radius);
   const auto count = std::ptrdiff_t(ids.size());
   std::size_t moved = 0;
@@ -135,7 +184,9 @@ std::size_t ParticleTetCollider::resolvePoints(const Particles& particles, std::
   for (std::ptrdiff_t k = 0; k < count; ++k) {
     const Index i = ids[std::size_t(k)];
     if (particles.inverseMass[i] <= Real(0)) continue;
-    moved += pushOut(particles.predicted, particles.position, points[std::size_t(k)], particles.position[i], settings);
+    WallContact contact;  // unused: one-way
+    moved += pushOut(particles.predicted, particles.position, points[std::size_t(k)], particles.position[i],
+                     settings, contact);
   }
   return moved;
 }

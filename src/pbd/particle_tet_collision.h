@@ -15,8 +15,32 @@
 // solid, where per-tet exits cannot know the way out) goes to the nearest point of the
 // solid's boundary surface and its radius beyond, along that face's outward normal.
 //
+// Two-way coupling (ParticleTetSettings::twoWay; Müller et al. 2007, "Position based
+// dynamics", section 3.3). The one-way push-out above moves particle p (inverse mass w_p) by d,
+// from where it is to the exit point. With twoWay, d instead becomes the PBD constraint
+//   C = n . (x_p - sum_i b_i x_i) - (its current value + |d|),   n = d / |d|,
+// between the particle and the wall point it is pushed away from: weights b_i (>= 0, sum 1)
+// over the vertices of the face it finally leaves through (TetPushOut::faceWeights, or the
+// boundary triangle of the last-resort exit). grad_p C = n, grad_i C = -b_i n, so
+//   s = |d| / (w_p + sum_i b_i^2 w_i),   dx_p = w_p s n,   dx_i = -w_i b_i s n,
+// computed as dx_p = w_p k d, dx_i = -w_i b_i k d with k = 1 / (w_p + sum_i b_i^2 w_i).
+// Momentum: m_p dx_p + sum_i m_i dx_i = s n (1 - sum_{w_i > 0} b_i) = 0 when every face vertex
+// is free. A pinned vertex (w_i = 0) does not move and absorbs its share of the momentum like
+// a fixed wall. When sum_i b_i^2 w_i = 0 (the whole face pinned: infinite wall mass), the
+// particle takes the one-way result bitwise.
+// The passes above are a search for the exit point against the wall as it is at the start of
+// the call; their steps add up to d, which is applied as one constraint per particle and call
+// (splitting each pass against the frozen wall would find the particle inside again and count
+// the wall's share twice). The wall's reaction is not felt by other particles in the same call:
+// corrections of all particles pressing on a vertex add up (Jacobi), which conserves momentum
+// but can over-push a light wall that many particles hit at once; the wall's own constraints
+// and the next call settle that.
+//
 // Parallelism: one particle per loop iteration, reading the solid and writing only its own
-// position, so results are bitwise identical for any thread count.
+// position, so results are bitwise identical for any thread count. Two-way wall corrections
+// are recorded in a slot per particle in the loop and added to the wall afterwards by one
+// thread, in particle order: no scatter races, and the same sums for any thread count.
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -31,7 +55,23 @@ struct ParticleTetSettings {
   Real radius = Real(0.08);  // m: the particle ends this far beyond the face (eq. 4.20)
   int maxPasses = 32;        // rounds of "find a containing tet, push out of it"
   int threads = 1;
+  // resolve() only: the push-out is shared with the wall vertices by inverse mass (above).
+  // false: only the particle moves (the wall as infinitely heavy), as before.
+  bool twoWay = false;
 };
+
+// The two-way split of one push-out (above): d = the particle's one-way displacement,
+// weights b_i and inverse masses w_i of the three wall vertices. particle = w_p k d,
+// wall[i] = -w_i b_i k d, k = 1 / (w_p + sum_i b_i^2 w_i). shared is false when the wall part
+// sum_i b_i^2 w_i is zero (or w_p is not positive): then the caller keeps the one-way result,
+// and particle = d, wall = 0.
+struct TwoWayPushOut {
+  Vec3 particle = Vec3::Zero();
+  std::array<Vec3, 3> wall{Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  bool shared = false;
+};
+TwoWayPushOut splitPushOut(const Vec3& d, Real particleInverseMass, const std::array<Real, 3>& weights,
+                           const std::array<Real, 3>& wallInverseMass);
 
 class ParticleTetCollider {
  public:
@@ -41,12 +81,16 @@ class ParticleTetCollider {
 
   // Pushes the particles [first, end) out of the solid at its predicted positions. Each
   // particle's ray runs from its start-of-step position to its predicted one. Returns the
-  // number of particles moved.
+  // number of particles moved. With settings.twoWay the solid's vertices (particles.predicted,
+  // weighted by particles.inverseMass) are pushed back as well, after all particles.
   std::size_t resolve(Particles& particles, Index first, Index end, const ParticleTetSettings& settings);
 
   // The same for points held outside the particle set (a solver's working copy): points[k] is
   // where particle ids[k] is now; the solid is at particles.predicted, and each point's ray
-  // starts at particles.position[ids[k]].
+  // starts at particles.position[ids[k]]. Always one-way (settings.twoWay is ignored): the
+  // solid is read-only here, and this runs inside the fluid solver's density iterations, where
+  // the wall only has to keep the blood's working copy out; the step's final resolve() is
+  // where blood pushes the wall back.
   std::size_t resolvePoints(const Particles& particles, std::vector<Vec3>& points, std::span<const Index> ids,
                             const ParticleTetSettings& settings);
 
@@ -58,17 +102,32 @@ class ParticleTetCollider {
   const std::vector<Tet>& tets() const { return m_tets; }
 
  private:
+  // The wall point a particle was last pushed away from: weights (sum 1) over three vertices.
+  struct WallContact {
+    Triangle vertices{};
+    std::array<Real, 3> weights{};
+  };
+  // One particle's two-way reaction on the wall, applied after the parallel loop.
+  struct WallCorrection {
+    Triangle vertices{};
+    std::array<Vec3, 3> delta{};
+    bool active = false;
+  };
+
   void rebuild(const std::vector<Vec3>& positions, Real padding);
   // Pushes x (a particle that started this step at `previous`) out of the solid at positions
-  // p (start of step: `start`); true if it moved.
+  // p (start of step: `start`); true if it moved, and then `contact` is the wall point of the
+  // last push.
   bool pushOut(const std::vector<Vec3>& p, const std::vector<Vec3>& start, Vec3& x, const Vec3& previous,
-               const ParticleTetSettings& settings) const;
-  Vec3 nearestBoundaryExit(const std::vector<Vec3>& x, const Vec3& p, Real radius) const;
+               const ParticleTetSettings& settings, WallContact& contact) const;
+  Vec3 nearestBoundaryExit(const std::vector<Vec3>& x, const Vec3& p, Real radius,
+                           WallContact& contact) const;
 
-  std::vector<Tet> m_tets;                  // the solid's tets, vertex ids shifted to particle ids
-  std::vector<std::uint8_t> m_exitFaces;    // boundary-face mask per tet (tet_geometry.h)
-  std::vector<Triangle> m_boundary;         // the solid's boundary faces, outward (particle ids)
+  std::vector<Tet> m_tets;                // the solid's tets, vertex ids shifted to particle ids
+  std::vector<std::uint8_t> m_exitFaces;  // boundary-face mask per tet (tet_geometry.h)
+  std::vector<Triangle> m_boundary;       // the solid's boundary faces, outward (particle ids)
   TetGrid m_grid;
+  std::vector<WallCorrection> m_wallCorrections;  // resolve() scratch, one slot per particle
 };
 
 }  // namespace hs::pbd

@@ -184,6 +184,7 @@ TetPushOut pushOutOfTet(const TetPoints& x, const Vec3& p, const Vec3& previous,
         out.face = hit.enter.face;
         out.alongRay = true;
         out.depth = (p - hit.enter.point).norm();
+        out.faceWeights = hit.enter.weights;
         return out;
       }
     }
@@ -197,7 +198,30 @@ TetPushOut pushOutOfTet(const TetPoints& x, const Vec3& p, const Vec3& previous,
   out.position = p + (q.faceDistance[std::size_t(f)] + radius) * tetFaceNormal(x, f);
   out.face = f;
   out.depth = std::max(q.faceDistance[std::size_t(f)], Real(0));
+  const auto& fv = kTetFaceVertices[std::size_t(f)];
+  out.faceWeights = triangleWeights(p, x[std::size_t(fv[0])], x[std::size_t(fv[1])], x[std::size_t(fv[2])]);
   return out;
+}
+
+std::array<Real, 3> triangleWeights(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  // w_a = N . ((b - p) x (c - p)) / N . N with N = (b - a) x (c - a), and cyclically: twice the
+  // signed area of the sub-triangle opposite a over twice the whole. The component of p - a
+  // along N drops out of N . (...), so this is the projection's coordinates.
+  constexpr Real kThird = Real(1) / Real(3);
+  const std::array<Real, 3> even{kThird, kThird, kThird};
+  const Vec3 n = (b - a).cross(c - a);
+  const Real nn = n.squaredNorm();
+  if (!(nn > 0) || !p.allFinite() || !std::isfinite(nn)) return even;
+  std::array<Real, 3> w{n.dot((b - p).cross(c - p)) / nn, n.dot((c - p).cross(a - p)) / nn,
+                        n.dot((a - p).cross(b - p)) / nn};
+  Real sum = 0;
+  for (Real& v : w) {
+    v = std::max(v, Real(0));
+    sum += v;
+  }
+  if (!(sum > 0) || !std::isfinite(sum)) return even;
+  for (Real& v : w) v /= sum;
+  return w;
 }
 
 std::vector<std::uint8_t> tetBoundaryFaceMasks(const std::vector<Tet>& tets) {

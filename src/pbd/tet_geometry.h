@@ -133,6 +133,11 @@ struct TetPushOut {
   int face = -1;                 // face it was pushed out through; -1: nothing done
   bool alongRay = false;         // true: along the motion (eq. 4.20); false: nearest face
   Real depth = 0;                // penetration depth removed: |p - entry| or distance to face
+  // The wall point the particle is pushed away from, as weights (>= 0, sum 1) of the face's
+  // vertices kTetFaceVertices[face][0..2]: the ray's entry point E, or for the nearest-face exit
+  // the foot of p on the face plane, brought into the face (triangleWeights). Two-way coupling
+  // (particle_tet_collision.h) distributes the wall's reaction over the face with them.
+  std::array<Real, 3> faceWeights{};
 };
 
 // A particle of radius `radius` at p inside the tet (queryPointInTet(x, p, kBarycentricSlack)
@@ -159,6 +164,13 @@ struct TetPushOut {
 // 4 square roots); the fallback adds one normal.
 TetPushOut pushOutOfTet(const TetPoints& x, const Vec3& p, const Vec3& previous, Real radius,
                         unsigned exitFaces = 0xFu);
+
+// Weights (w_a, w_b, w_c), >= 0 and summing to 1, of a point of the triangle abc near p: the
+// barycentric coordinates of p's projection onto the triangle's plane, with negative ones set
+// to zero and the rest renormalised (for a projection outside the triangle this is a point on
+// its boundary, not necessarily the nearest one). Degenerate triangle or non-finite input:
+// (1/3, 1/3, 1/3).
+std::array<Real, 3> triangleWeights(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
 // For every tet, the bit mask of its faces (bit i = face i, kTetFaceVertices) that lie on the
 // mesh boundary, i.e. belong to no other tet. O(T log T); the topology is fixed, compute once.

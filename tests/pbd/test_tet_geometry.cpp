@@ -553,5 +553,65 @@ TEST(TetPushOut, RepeatedPassesLeaveAJitteredBoxMesh) {
   std::printf("most pushes for one particle: %d\n", maxPasses);
 }
 
+TEST(TetPushOut, TriangleWeightsGiveAPointOfTheTriangle) {
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<float> u(-1, 1), v(0, 1);
+  for (int k = 0; k < 500; ++k) {
+    const Vec3 a(Real(u(rng)), Real(u(rng)), Real(u(rng))), b(Real(u(rng)), Real(u(rng)), Real(u(rng))),
+        c(Real(u(rng)), Real(u(rng)), Real(u(rng)));
+    const Vec3 n = (b - a).cross(c - a);
+    if (n.norm() < Real(0.05)) continue;
+    // Inside: the weights are recovered, also for a point off the plane along the normal.
+    std::array<Real, 3> w{Real(v(rng)), Real(v(rng)), Real(v(rng))};
+    const Real sum = w[0] + w[1] + w[2];
+    for (Real& x : w) x /= sum;
+    const Vec3 q = w[0] * a + w[1] * b + w[2] * c;
+    const std::array<Real, 3> got = triangleWeights(q + Real(u(rng)) * n.normalized(), a, b, c);
+    for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(got[i], w[i], 1e-4) << k;
+    // Anywhere: non-negative and summing to 1.
+    const std::array<Real, 3> far =
+        triangleWeights(Vec3(Real(3) * u(rng), Real(3) * u(rng), Real(3) * u(rng)), a, b, c);
+    EXPECT_NEAR(far[0] + far[1] + far[2], 1, 1e-6);
+    for (const Real x : far) EXPECT_GE(x, 0);
+  }
+  const std::array<Real, 3> flat =
+      triangleWeights(Vec3(1, 2, 3), Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(2, 2, 2));
+  for (const Real x : flat) EXPECT_EQ(x, Real(1) / Real(3));
+}
+
+TEST(TetPushOut, FaceWeightsLocateThePointPushedAwayFrom) {
+  // Along the ray: the weights give the entry point, radius back from the result along the
+  // motion. Fallback: the foot of p on the exit face's plane (inside the face here).
+  std::mt19937 rng(22);
+  std::uniform_real_distribution<float> u(-1, 1);
+  const Real radius = Real(0.02);
+  int alongRay = 0;
+  for (int k = 0; k < 500; ++k) {
+    const TetPoints x = randomTet(rng, Vec3::Zero(), k % 2 == 0);
+    const Vec3 p = wellInsidePoint(x, rng);
+    const Vec3 dir = Vec3(Real(u(rng)), Real(u(rng)), Real(u(rng))).normalized();
+    const TetPushOut out = pushOutOfTet(x, p, p - Real(4) * dir, radius);
+    ASSERT_GE(out.face, 0);
+    const auto& f = kTetFaceVertices[std::size_t(out.face)];
+    Vec3 point = Vec3::Zero();
+    for (std::size_t i = 0; i < 3; ++i) {
+      EXPECT_GE(out.faceWeights[i], 0);
+      point += out.faceWeights[i] * x[std::size_t(f[i])];
+    }
+    EXPECT_NEAR(out.faceWeights[0] + out.faceWeights[1] + out.faceWeights[2], 1, 1e-6);
+    if (out.alongRay) {
+      ++alongRay;
+      EXPECT_LT((point - (out.position + radius * dir)).norm(), 1e-5) << k;
+    }
+  }
+  EXPECT_GT(alongRay, 450);
+  const TetPoints x = unitTet();
+  const TetPushOut fallback =
+      pushOutOfTet(x, Vec3(Real(0.1), Real(0.3), Real(0.2)), Vec3(Real(0.1), Real(0.3), Real(0.2)), radius);
+  ASSERT_EQ(fallback.face, 1);  // x = 0: foot (0, 0.3, 0.2) = 0.5 x_0 + 0.2 x_3 + 0.3 x_2
+  const std::array<Real, 3> expected{Real(0.5), Real(0.2), Real(0.3)};  // vertices 0, 3, 2
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(fallback.faceWeights[i], expected[i], 1e-6);
+}
+
 }  // namespace
 }  // namespace hs::pbd
