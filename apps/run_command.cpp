@@ -14,6 +14,7 @@
 #include "cardiac/beat_metrics.h"
 #include "cardiac/heart_simulation.h"
 #include "exit_codes.h"
+#include "flow_report.h"
 #include "io/scenario_file.h"
 #include "io/vtk_writer.h"
 #include "progress_bar.h"
@@ -178,6 +179,7 @@ int runCommand(const RunOptions& options) {
     csv << ",cavity_volume_m3,cavity_volume_ml,volume_error_mean,volume_error_max,inverted_tets,rest_deviation_rel";
   if (sim.hasBlood())
     csv << ",blood_lost,blood_density_error_mean,blood_density_error_max,blood_max_speed_m_s,blood_inside_wall";
+  if (sim.circulation()) writeFlowHeader(csv);
   csv << '\n';
   csv.precision(9);
 
@@ -207,7 +209,7 @@ int runCommand(const RunOptions& options) {
   const auto steps = static_cast<std::int64_t>(stepCount);
   RunStatistics stats;
   stats.lastSecondFrom = double(steps) * dt - 1.0;
-  cardiac::BeatTracker beats(sim.hasHeart() ? sim.cavityVolume() : 0.0);
+  cardiac::BeatTracker beats(sim.hasHeart() ? sim.cavityVolume() : 0.0, dt);
   ProgressBar progress(static_cast<long>(steps));
   double wallSeconds = 0;
   try {
@@ -239,7 +241,8 @@ int runCommand(const RunOptions& options) {
         stats.volumeErrorMeanSum += double(tissue.volumeErrorMean);
         stats.cavityMin = std::min(stats.cavityMin, cavity);
         stats.cavityMax = std::max(stats.cavityMax, cavity);
-        beats.record(startTime, sim.lastPhase(), cavity);
+        beats.record(startTime, sim.lastPhase(), cavity,
+                     sim.circulation() ? stepFlows(*sim.circulation()) : cardiac::ValveFlows{});
         csv << ',' << cavity << ',' << cavity * 1e6 << ',' << tissue.volumeErrorMean << ','
             << tissue.volumeErrorMax << ',' << tissue.invertedTets << ',' << sim.restDeviationRelative();
       }
@@ -256,6 +259,7 @@ int runCommand(const RunOptions& options) {
         csv << ',' << blood.lost << ',' << blood.densityErrorMean << ',' << blood.densityErrorMax << ','
             << blood.maxSpeed << ',' << blood.insideWall;
       }
+      if (sim.circulation()) writeFlowRow(csv, *sim.circulation());
       csv << '\n';
       if (vtk && (s + 1) % scenario.output.vtkEvery == 0) writeFrame(s + 1);
       progress.update(static_cast<long>(s + 1), sim.time());
@@ -283,7 +287,10 @@ int runCommand(const RunOptions& options) {
   report["threads"] = threads;
   report["iterations"] = scenario.simulation.iterations;
   report["state_hash"] = hex(pbd::stateHash(sim.particles()));
-  if (sim.hasHeart()) addHeartReport(report, sim, stats, beats, steps);
+  if (sim.hasHeart()) {
+    addHeartReport(report, sim, stats, beats, steps);
+    report["heart"] = heartPumpReport(beats);
+  }
   if (sim.hasBlood()) {
     const cardiac::BloodStats blood = sim.bloodStats();
     const double lastSecondMean =

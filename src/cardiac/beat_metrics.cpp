@@ -4,25 +4,51 @@
 
 namespace hs::cardiac {
 
-void BeatTracker::record(double time, Phase phase, double volume) {
+void BeatTracker::record(double time, Phase phase, double volume, const ValveFlows& flows) {
   const bool systoleStarts = phase == Phase::Systole && m_previous != Phase::Systole;
   m_previous = phase;
   if (systoleStarts) {
-    finish();
+    close(true);
     // The beat starts where the step started: the volume before it is end-diastolic.
-    m_current = BeatSummary{static_cast<int>(m_beats.size()) + 1, time, m_lastVolume, m_lastVolume};
+    m_current = BeatSummary{};
+    m_current.index = static_cast<int>(m_beats.size()) + 1;
+    m_current.startTime = time;
+    m_current.edv = m_current.esv = m_lastVolume;
     m_open = true;
   }
   m_lastVolume = volume;
   if (!m_open) return;
+  m_current.flows += flows;
+  m_current.duration = time + m_stepLength - m_current.startTime;
   if (phase != Phase::Systole) m_systoleEnded = true;
   m_current.esv = std::min(m_current.esv, volume);
 }
 
-void BeatTracker::finish() {
-  if (m_open && m_systoleEnded) m_beats.push_back(m_current);
+void BeatTracker::finish() { close(false); }
+
+void BeatTracker::close(bool complete) {
+  if (m_open && m_systoleEnded) {
+    m_current.complete = complete;
+    m_beats.push_back(m_current);
+  }
   m_open = false;
   m_systoleEnded = false;
+}
+
+BeatMeans BeatTracker::means() const {
+  BeatMeans m;
+  for (const BeatSummary& b : m_beats) {
+    if (b.index < 2 || !b.complete) continue;
+    ++m.count;
+    m.edv += b.edv, m.esv += b.esv, m.strokeVolume += b.strokeVolume();
+    m.ejectionFraction += b.ejectionFraction(), m.cardiacOutput += b.cardiacOutput();
+    m.regurgitantVolume += b.regurgitantVolume(), m.forwardAortic += b.flows.aorticForward;
+  }
+  if (m.count == 0) return m;
+  const double n = double(m.count);
+  m.edv /= n, m.esv /= n, m.strokeVolume /= n, m.ejectionFraction /= n, m.cardiacOutput /= n;
+  m.regurgitantVolume /= n, m.forwardAortic /= n;
+  return m;
 }
 
 double BeatTracker::meanEjectionFraction() const {

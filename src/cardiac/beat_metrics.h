@@ -10,29 +10,58 @@
 
 namespace hs::cardiac {
 
+// Blood volumes (m^3) that crossed the two orifices in one step or one beat.
+struct ValveFlows {
+  double mitralForward = 0, mitralBackward = 0, aorticForward = 0, aorticBackward = 0;
+  ValveFlows& operator+=(const ValveFlows& o) {
+    mitralForward += o.mitralForward, mitralBackward += o.mitralBackward;
+    aorticForward += o.aorticForward, aorticBackward += o.aorticBackward;
+    return *this;
+  }
+};
+
 struct BeatSummary {
   int index = 0;          // 1-based
   double startTime = 0;   // s
+  double duration = 0;    // s, to the next systole's start (or the end of the run)
+  bool complete = false;  // ended by the next systole (not by the end of the run)
   double edv = 0;         // m^3
   double esv = 0;         // m^3
+  ValveFlows flows;       // over the beat
   [[nodiscard]] double strokeVolume() const { return edv - esv; }
   [[nodiscard]] double ejectionFraction() const { return edv > 0 ? (edv - esv) / edv : 0; }
+  // Cardiac output (m^3/s): the stroke volume once per beat, CO = SV / beat length.
+  [[nodiscard]] double cardiacOutput() const { return duration > 0 ? strokeVolume() / duration : 0; }
+  // Blood that went the wrong way through either valve during the beat (m^3).
+  [[nodiscard]] double regurgitantVolume() const { return flows.mitralBackward + flows.aorticBackward; }
+};
+
+// Means over the complete beats after the first (the first starts from the initial state):
+// the figures a run reports for the heart's pumping. count = 0 when there are none.
+struct BeatMeans {
+  int count = 0;
+  double edv = 0, esv = 0, strokeVolume = 0, ejectionFraction = 0, cardiacOutput = 0, regurgitantVolume = 0;
+  double forwardAortic = 0;  // m^3 per beat
 };
 
 class BeatTracker {
  public:
   // initialVolume: the cavity volume before the first step (the first beat's EDV candidate).
-  explicit BeatTracker(double initialVolume) : m_lastVolume(initialVolume) {}
+  // stepLength: dt (s); record() gets each step's start time, so a beat's duration ends one
+  // step after the last step recorded in it.
+  explicit BeatTracker(double initialVolume, double stepLength = 0)
+      : m_lastVolume(initialVolume), m_stepLength(stepLength) {}
 
   // Called once per step with the phase the wall was in during that step and the cavity
   // volume at its end.
-  void record(double time, Phase phase, double volume);
+  void record(double time, Phase phase, double volume, const ValveFlows& flows = {});
   // Closes the beat in progress (if it contained a systole).
   void finish();
 
   [[nodiscard]] const std::vector<BeatSummary>& beats() const { return m_beats; }
   // Mean EF over the recorded beats (0 without beats).
   [[nodiscard]] double meanEjectionFraction() const;
+  [[nodiscard]] BeatMeans means() const;
 
  private:
   std::vector<BeatSummary> m_beats;
@@ -41,6 +70,8 @@ class BeatTracker {
   bool m_systoleEnded = false;  // of the beat in progress
   Phase m_previous = Phase::Rest;
   double m_lastVolume = 0;  // at the end of the previous step
+  double m_stepLength = 0;
+  void close(bool complete);
 };
 
 }  // namespace hs::cardiac

@@ -55,6 +55,33 @@ std::vector<Vec3> chamberLattice(const Scenario& scenario) {
   return x;
 }
 
+// Lattice sites of the inflow vessel's lumen (a cylinder of the mitral radius from the base
+// plane y = 0 up to the vessel's far end), one spacing in from its wall, lowest first; then
+// the cavity's sites from the base down, for blood the vessel cannot hold.
+std::vector<Vec3> vesselLattice(const Scenario& scenario, const LvModel& model) {
+  const Real d = scenario.blood.spacing;
+  const LvGeometryParams& g = scenario.geometry;
+  Vec3 centre = Vec3::Zero();
+  for (Index v : model.mitralRing) centre += model.mesh.vertices[v];
+  centre /= Real(model.mitralRing.size());
+  const Real reach = g.mitralRadius - d;
+  const Real top = centre.y() + g.baseThickness + g.inflowVesselLength;
+  std::vector<Vec3> x;
+  if (reach > 0) {
+    const Vec3 lower(centre.x() - g.mitralRadius, centre.y(), centre.z() - g.mitralRadius);
+    const Vec3 upper(centre.x() + g.mitralRadius, top, centre.z() + g.mitralRadius);
+    for (const Vec3& p : pbd::fluidBlock(lower, upper, d)) {
+      const Real dx = p.x() - centre.x(), dz = p.z() - centre.z();
+      if (dx * dx + dz * dz <= reach * reach) x.push_back(p);
+    }
+  }
+  std::stable_sort(x.begin(), x.end(), [](const Vec3& p, const Vec3& q) { return p.y() < q.y(); });
+  std::vector<Vec3> cavity = chamberLattice(scenario);
+  std::stable_sort(cavity.begin(), cavity.end(), [](const Vec3& p, const Vec3& q) { return p.y() > q.y(); });
+  x.insert(x.end(), cavity.begin(), cavity.end());
+  return x;
+}
+
 double physicalMemoryBytes() {
   const long pages = sysconf(_SC_PHYS_PAGES);
   const long size = sysconf(_SC_PAGE_SIZE);
@@ -118,15 +145,20 @@ std::size_t bloodBytesPerParticle(std::size_t neighbours) {
   return 256 + 12 * neighbours;
 }
 
-std::vector<Vec3> bloodStartPositions(const Scenario& scenario) {
+std::vector<Vec3> bloodStartPositions(const Scenario& scenario, const LvModel* model) {
   const BloodSettings& b = scenario.blood;
   if (b.start == BloodSettings::Start::Chamber && !scenario.heart)
     throw std::invalid_argument("blood.start: \"chamber\" needs a heart (model.enabled = true); use \"block\"");
+  if (b.start == BloodSettings::Start::Vessel && (!scenario.heart || !model))
+    throw std::invalid_argument("blood.start: \"vessel\" needs a heart (model.enabled = true); use \"block\"");
   // Count the sites before making any: a tiny spacing must fail here, not in the allocator.
   double sites = 1;
-  if (b.start == BloodSettings::Start::Chamber) {  // the cavity's bounding box, an upper bound
-    const double a = 2 * double(scenario.geometry.endoRadius) / double(b.spacing);
-    sites = a * a * double(scenario.geometry.endoLongAxis) / double(b.spacing);
+  if (b.start != BloodSettings::Start::Block) {  // cavity and vessel bounding boxes, an upper bound
+    const LvGeometryParams& g = scenario.geometry;
+    const double a = 2 * double(g.endoRadius) / double(b.spacing);
+    const double r = 2 * double(g.mitralRadius) / double(b.spacing);
+    sites = a * a * double(g.endoLongAxis) / double(b.spacing) +
+            r * r * double(g.baseThickness + g.inflowVesselLength) / double(b.spacing);
   } else {
     for (int a = 0; a < 3; ++a) sites *= std::floor(double(b.blockMax[a] - b.blockMin[a]) / double(b.spacing) + 1e-4);
   }
@@ -149,6 +181,18 @@ std::vector<Vec3> bloodStartPositions(const Scenario& scenario) {
       if (b.blockMin[a] < c.min[a] || b.blockMax[a] > c.max[a])
         throw std::invalid_argument("blood.block_min: the start block " + vec(b.blockMin) + " - " + vec(b.blockMax) +
                                     " m must lie inside the container " + vec(c.min) + " - " + vec(c.max) + " m");
+  }
+  if (b.start == BloodSettings::Start::Vessel) {
+    std::vector<Vec3> x = vesselLattice(scenario, *model);
+    if (b.particles > 0) {
+      if (x.size() < std::size_t(b.particles))
+        throw std::invalid_argument("blood.particles: the inflow vessel and the chamber hold " +
+                                    str(double(x.size())) + " particles at spacing " + str(b.spacing) +
+                                    " m, expected at least " + str(double(b.particles)) +
+                                    "; lower blood.particles or blood.spacing");
+      x.resize(std::size_t(b.particles));  // the vessel from its bottom up, then the cavity
+    }
+    return x;
   }
   std::vector<Vec3> x = b.start == BloodSettings::Start::Chamber ? chamberLattice(scenario)
                                                                  : pbd::fluidBlock(b.blockMin, b.blockMax, b.spacing);
@@ -177,6 +221,8 @@ BloodStats measureBlood(const Scenario& scenario, const pbd::Particles& particle
   stats.meanNeighbours = double(f.meanNeighbours);
   for (std::size_t i = 0; i < particles.size(); ++i) {
     if (particles.kind[i] != pbd::ParticleKind::Fluid) continue;
+    // Pinned blood is parked outside the model, waiting to re-enter (circulation.h): not lost.
+    if (particles.inverseMass[i] == Real(0)) continue;
     const Vec3& x = particles.position[i];
     bool out = !x.allFinite() || !particles.velocity[i].allFinite();
     for (int a = 0; a < 3 && !out; ++a) out = x[a] < domainMin[a] || x[a] > domainMax[a];

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "cardiac/lv_model.h"
 #include "cardiac/scenario.h"
 #include "pbd/fluid_solver.h"
 #include "pbd/particles.h"
@@ -30,7 +31,9 @@ pbd::FluidStepSettings bloodSolverSettings(const Scenario& scenario, int threads
 // all of them (blood.particles = 0) or the first blood.particles sites, lowest y first.
 // Throws std::invalid_argument when the block holds too few sites, when the start block is
 // not inside the container, or when the particles would not fit in this machine's memory.
-std::vector<pbd::Vec3> bloodStartPositions(const Scenario& scenario);
+// blood.start = "vessel" fills the inflow vessel of `model` (from its bottom up), then the
+// cavity from the base down; it needs the model.
+std::vector<pbd::Vec3> bloodStartPositions(const Scenario& scenario, const LvModel* model = nullptr);
 
 // Rough bytes per blood particle of a run (state, solver buffers, neighbour lists of about
 // `neighbours` entries), for the memory check above.

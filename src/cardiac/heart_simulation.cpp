@@ -82,8 +82,16 @@ HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
   if (scenario.blood.enabled) {
     // The start block first: it checks the particle count against memory before anything
     // else is allocated; then the solver settings check the remaining parameters.
-    const std::vector<pbd::Vec3> start = bloodStartPositions(scenario);
-    if (m_model) m_wallContact = std::make_unique<pbd::ParticleTetCollider>(m_model->mesh.tets, m_firstWallParticle);
+    const std::vector<pbd::Vec3> start = bloodStartPositions(scenario, m_model ? &*m_model : nullptr);
+    if (m_model) {
+      m_wallContact = std::make_unique<pbd::ParticleTetCollider>(m_model->mesh.tets, m_firstWallParticle);
+      // Blood lives on the shell's inner side (the cavity and the vessel lumens): the inner
+      // layer's vertices, 2i (lv_model.h).
+      std::vector<std::uint8_t> wetted(m_model->mesh.vertices.size(), 0);
+      for (std::size_t v = 0; v < wetted.size(); v += 2) wetted[v] = 1;
+      m_wallContact->setWettedVertices(wetted);
+      m_circulation = std::make_unique<Circulation>(*m_model, scenario.circulation, scenario.blood, scenario.cycle);
+    }
     pbd::FluidStepSettings fluid = bloodSolverSettings(scenario, threads);
     if (m_model) {
       // The wall takes part in every density iteration (and once more after its own
@@ -91,6 +99,7 @@ HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
       // through it by its own pressure.
       fluid.afterIteration = [this](std::vector<pbd::Vec3>& x, std::span<const Index> ids, const pbd::Particles& p) {
         m_wallContact->resolvePoints(p, x, ids, wallContactSettings());
+        m_circulation->gatePoints(p, x, ids);
       };
     }
     m_fluid = std::make_unique<pbd::FluidSolver>(fluid);
@@ -110,11 +119,13 @@ void HeartSimulation::reorderBlood() {
   const std::vector<Index> order = pbd::mortonOrder(x, m_scenario.blood.supportRadius);
   pbd::permuteRange(m_particles, m_firstBloodParticle, order);
   pbd::applyOrder(m_bloodIds, order);
+  if (m_circulation) m_circulation->permute(order);
 }
 
 void HeartSimulation::step() {
   if (m_fluid && m_steps > 0 && m_steps % kReorderInterval == 0) reorderBlood();
   if (m_cycle) m_lastPhase = m_cycle->phase();
+  if (m_circulation) m_circulation->beginStep(m_particles, m_firstBloodParticle, m_lastPhase, m_solver.dt);
   pbd::StepHooks hooks;
   hooks.afterPrediction = [this](pbd::Particles& p) {
     if (m_cycle) m_cycle->apply(p.position, p.predicted);
@@ -123,17 +134,25 @@ void HeartSimulation::step() {
   if (m_wallContact) {
     hooks.afterProjection = [this](pbd::Particles& p) {
       m_wallContact->resolve(p, m_firstBloodParticle, Index(p.size()), wallContactSettings());
+      m_circulation->gateParticles(p, m_firstBloodParticle);
     };
   }
   if (m_fluid) hooks.postProcessVelocities = [this](pbd::Particles& p) { m_fluid->postProcessVelocities(p); };
   pbd::step(m_constraints, m_particles, m_solver, hooks);
+  if (m_circulation) m_circulation->endStep(m_particles, m_firstBloodParticle, m_fluid->pressures());
   ++m_steps;
+}
+
+const std::vector<Real>& HeartSimulation::pressures() const {
+  static const std::vector<Real> none;
+  return m_fluid ? m_fluid->pressures() : none;
 }
 
 pbd::ParticleTetSettings HeartSimulation::wallContactSettings() const {
   pbd::ParticleTetSettings contact;
   contact.radius = m_scenario.blood.radius;
   contact.threads = m_threads;
+  contact.twoWay = m_scenario.circulation.twoWay;
   return contact;
 }
 

@@ -15,6 +15,7 @@
 
 #include "cardiac/blood.h"
 #include "cardiac/cardiac_cycle.h"
+#include "cardiac/circulation.h"
 #include "cardiac/lv_model.h"
 #include "cardiac/scenario.h"
 #include "pbd/fluid_solver.h"
@@ -59,6 +60,16 @@ class HeartSimulation {
   // Phase during the last step (what the wall was doing), Systole before the first.
   [[nodiscard]] Phase lastPhase() const { return m_lastPhase; }
 
+  // Heart and blood: the flow path (valves, loop, per-step flows and pressures); null otherwise.
+  [[nodiscard]] const Circulation* circulation() const { return m_circulation.get(); }
+  // Pressure (Pa) of each particle from the last density solve (0 for the wall), see
+  // pbd::FluidSolver::pressures(); empty without blood.
+  [[nodiscard]] const std::vector<Real>& pressures() const;
+  // A blood particle that is shown and measured (not parked outside the model).
+  [[nodiscard]] bool bloodActive(Index particle) const {
+    return particle >= m_firstBloodParticle && m_particles.inverseMass[particle] > Real(0);
+  }
+
   // Heart only (hasHeart()).
   [[nodiscard]] Real cavityVolume() const;
   [[nodiscard]] TissueStats tissueStats() const;
@@ -77,6 +88,7 @@ class HeartSimulation {
   std::optional<CardiacCycle> m_cycle;
   std::unique_ptr<pbd::FluidSolver> m_fluid;
   std::unique_ptr<pbd::ParticleTetCollider> m_wallContact;  // heart and blood
+  std::unique_ptr<Circulation> m_circulation;               // heart and blood
   Vec3 m_domainMin = Vec3::Zero(), m_domainMax = Vec3::Zero();  // outside: blood is lost
   std::vector<Index> m_bloodIds;
   void reorderBlood();

@@ -97,7 +97,7 @@ struct BloodSettings {
   Real vorticity = 0;               // m/s, PBF eq. 16 epsilon; 0 = off
   // Where the particles start: a lattice block (blockMin..blockMax), or the heart's chamber
   // (the LV cavity, at least one spacing from its wall).
-  enum class Start { Block, Chamber } start = Start::Block;
+  enum class Start { Block, Chamber, Vessel } start = Start::Block;
   Vec3 blockMin = Vec3(Real(-0.8), Real(-2.4), Real(-0.8));  // m, the block the particles start in
   Vec3 blockMax = Vec3(Real(0.8), Real(-0.8), Real(0.8));
 };
@@ -109,6 +109,15 @@ struct ContainerSettings {
   Vec3 min = Vec3(-1, -1, -1);  // m
   Vec3 max = Vec3(1, 1, 1);     // m
   bool mesh = false;
+};
+
+// The blood's path through the heart (circulation.h): valves, filling pressure, closed loop.
+enum class ValveMode { Timing, Pressure, Open };
+struct CirculationSettings {
+  ValveMode valveMode = ValveMode::Timing;
+  bool loop = true;               // blood leaving a vessel's far end re-enters the inflow vessel
+  Real atrialPressureMmHg = 0;    // filling pressure driving the inflow vessel (mmHg)
+  bool twoWay = false;            // blood pushes the wall back (two-way coupling)
 };
 
 struct OutputSettings {
@@ -126,6 +135,7 @@ struct Scenario {
   CycleSettings cycle;
   BloodSettings blood;
   ContainerSettings container;
+  CirculationSettings circulation;
   OutputSettings output;
 };
 

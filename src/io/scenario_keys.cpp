@@ -31,7 +31,13 @@ std::vector<KeySpec> buildKeyTable() {
       {"irregular", BeatPattern::Irregular},
       {"inconsistent", BeatPattern::Inconsistent}};
   const std::vector<std::pair<std::string, cardiac::BloodSettings::Start>> starts = {
-      {"block", cardiac::BloodSettings::Start::Block}, {"chamber", cardiac::BloodSettings::Start::Chamber}};
+      {"block", cardiac::BloodSettings::Start::Block},
+      {"chamber", cardiac::BloodSettings::Start::Chamber},
+      {"vessel", cardiac::BloodSettings::Start::Vessel}};
+  const std::vector<std::pair<std::string, cardiac::ValveMode>> valveModes = {
+      {"timing", cardiac::ValveMode::Timing},
+      {"pressure", cardiac::ValveMode::Pressure},
+      {"open", cardiac::ValveMode::Open}};
   const char* m = "m";
   return {
       // [scenario]
@@ -160,7 +166,8 @@ std::vector<KeySpec> buildKeyTable() {
       realKey("blood.vorticity", HS_FIELD(blood.vorticity), between(0, 1000), "m/s",
               "Vorticity confinement epsilon (PBF eq. 16); 0 = off."),
       choiceKey("blood.start", HS_FIELD(blood.start), starts,
-                "Where the blood starts: \"block\" (block_min..block_max) or \"chamber\" (the LV cavity)."),
+                "Where the blood starts: \"block\" (block_min..block_max), \"chamber\" (the LV cavity) or "
+                "\"vessel\" (the inflow vessel, then the cavity from the base down if it holds more)."),
       vec3Key("blood.block_min", HS_FIELD(blood.blockMin), m, "Lower corner of the block the blood starts in."),
       vec3Key("blood.block_max", HS_FIELD(blood.blockMax), m, "Upper corner of that block."),
       // [container]
@@ -169,6 +176,16 @@ std::vector<KeySpec> buildKeyTable() {
       vec3Key("container.max", HS_FIELD(container.max), m, "Upper corner of the box."),
       boolKey("container.mesh", HS_FIELD(container.mesh),
               "Walls as a static triangle mesh instead of planes (same box)."),
+      // [circulation]
+      choiceKey("circulation.valves", HS_FIELD(circulation.valveMode), valveModes,
+                "When the valves open: \"timing\" (mitral in diastole, aortic in systole), \"pressure\" "
+                "(while the pressure before a valve exceeds the pressure after it) or \"open\" (always)."),
+      boolKey("circulation.loop", HS_FIELD(circulation.loop),
+              "Blood leaving a vessel's far end re-enters the inflow vessel (closed loop, nothing lost)."),
+      realKey("circulation.atrial_pressure_mmhg", HS_FIELD(circulation.atrialPressureMmHg), between(0, 100),
+              "mmHg", "Filling (atrial) pressure driving blood down the inflow vessel."),
+      boolKey("circulation.two_way", HS_FIELD(circulation.twoWay),
+              "Two-way coupling: blood pushes the wall back (off: the thesis's one-way push-out)."),
       // [output]
       boolKey("output.vtk", HS_FIELD(output.vtk), "Write VTK frames for ParaView."),
       intKey("output.vtk_every", HS_FIELD(output.vtkEvery), 1, "steps", "Time steps between VTK frames."),
@@ -194,6 +211,7 @@ const std::vector<TableSpec>& tableTable() {
       {"cycle.inconsistent", nullptr, nullptr},
       {"blood", nullptr, nullptr},
       {"container", nullptr, nullptr},
+      {"circulation", nullptr, nullptr},
       {"output", nullptr, nullptr},
   };
   return tables;

@@ -44,8 +44,35 @@ TwoWayPushOut splitPushOut(const Vec3& d, Real particleInverseMass, const std::a
 
 ParticleTetCollider::ParticleTetCollider(std::vector<Tet> tets, Index firstVertex)
     : m_tets(shifted(std::move(tets), firstVertex)),
-      m_exitFaces(tetBoundaryFaceMasks(m_tets)),
-      m_boundary(boundaryFaces(m_tets)) {}
+      m_boundaryFaces(tetBoundaryFaceMasks(m_tets)),
+      m_exitFaces(m_boundaryFaces),
+      m_boundary(boundaryFaces(m_tets)),
+      m_firstVertex(firstVertex) {}
+
+void ParticleTetCollider::setWettedVertices(const std::vector<std::uint8_t>& wetted) {
+  auto isWetted = [&](Index particle) {
+    const Index v = particle - m_firstVertex;
+    return v < wetted.size() && wetted[v] != 0;
+  };
+  for (std::size_t t = 0; t < m_tets.size(); ++t) {
+    unsigned wettedMask = 0;
+    for (unsigned f = 0; f < 4; ++f) {
+      if (!((m_boundaryFaces[t] >> f) & 1u)) continue;
+      const auto& face = kTetFaceVertices[f];
+      bool all = true;
+      for (int k : face) all = all && isWetted(m_tets[t][std::size_t(k)]);
+      if (all) wettedMask |= 1u << f;
+    }
+    // No wetted face: leave toward the neighbours (through inner faces), whose passes
+    // continue the way out; a tet without inner faces keeps its boundary faces.
+    const unsigned inner = ~unsigned(m_boundaryFaces[t]) & 0xFu;
+    m_exitFaces[t] = std::uint8_t(wettedMask != 0 ? wettedMask : (inner != 0 ? inner : m_boundaryFaces[t]));
+  }
+  std::vector<Triangle> kept;
+  for (const Triangle& f : m_boundary)
+    if (isWetted(f[0]) && isWetted(f[1]) && isWetted(f[2])) kept.push_back(f);
+  if (!kept.empty()) m_boundary.swap(kept);
+}
 
 // Last resort for a particle no tet-by-tet push could free: the closest point q of the
 // boundary surface, and p* = q + radius n with n that face's outward normal. Brute force over
@@ -114,7 +141,7 @@ bool ParticleTetCollider::pushOut(const std::vector<Vec3>& p, const std::vector<
     const auto& face = kTetFaceVertices[std::size_t(out.face)];
     for (std::size_t k = 0; k < 3; ++k) contact.vertices[k] = m_tets[t][std::size_t(face[k])];
     contact.weights = out.faceWeights;
-    if (out.alongRay && !(m_exitFaces[t] & (1u << out.face))) {
+    if (out.alongRay && !(m_boundaryFaces[t] & (1u << out.face))) {
       // Entered through an inner face: step just across it into the tet the ray came from
       // and push again from there (eq. 4.20 measured from the solid's surface).
       ray = (before - from).normalized();

@@ -101,6 +101,13 @@ class ParticleTetCollider {
 
   const std::vector<Tet>& tets() const { return m_tets; }
 
+  // The particles live on one side of the solid (blood in a heart: the cavity and vessel
+  // lumens). wetted[v] marks the solid's vertices on that side (v = vertex id, as in the
+  // tets passed to the constructor); a boundary face is wetted when its three vertices are.
+  // A particle that has no usable ray back (the wall moved onto it, or it sank deep within
+  // one step) then leaves only through wetted faces: never out of the far side of a wall.
+  void setWettedVertices(const std::vector<std::uint8_t>& wetted);
+
  private:
   // The wall point a particle was last pushed away from: weights (sum 1) over three vertices.
   struct WallContact {
@@ -124,8 +131,13 @@ class ParticleTetCollider {
                            WallContact& contact) const;
 
   std::vector<Tet> m_tets;                // the solid's tets, vertex ids shifted to particle ids
-  std::vector<std::uint8_t> m_exitFaces;  // boundary-face mask per tet (tet_geometry.h)
-  std::vector<Triangle> m_boundary;       // the solid's boundary faces, outward (particle ids)
+  std::vector<std::uint8_t> m_boundaryFaces;  // boundary-face mask per tet (tet_geometry.h)
+  // Faces a particle without a usable ray may leave a tet through (pushOutOfTet's fallback):
+  // the boundary faces, or after setWettedVertices the wetted ones (else the tet's inner
+  // faces, toward its neighbours).
+  std::vector<std::uint8_t> m_exitFaces;
+  std::vector<Triangle> m_boundary;  // boundary faces a particle may be put beyond, outward (particle ids)
+  Index m_firstVertex = 0;
   TetGrid m_grid;
   std::vector<WallCorrection> m_wallCorrections;  // resolve() scratch, one slot per particle
 };

@@ -253,6 +253,12 @@ std::vector<KeyCase> everyKeyCase() {
       {"container.max", "[2.0, 1.5, 2.0]", [](const Scenario& s) { return s.container.max == Vec3(2, 1.5, 2); }},
       {"container.mesh", "true", [](const Scenario& s) { return s.container.mesh; }},
       {"model.enabled", "false", [](const Scenario& s) { return !s.heart; }},
+      {"circulation.valves", "pressure",
+       [](const Scenario& s) { return s.circulation.valveMode == cardiac::ValveMode::Pressure; }},
+      {"circulation.loop", "false", [](const Scenario& s) { return !s.circulation.loop; }},
+      {"circulation.atrial_pressure_mmhg", "8",
+       [](const Scenario& s) { return s.circulation.atrialPressureMmHg == Real(8); }},
+      {"circulation.two_way", "true", [](const Scenario& s) { return s.circulation.twoWay; }},
       {"output.vtk", "true", [](const Scenario& s) { return s.output.vtk; }},
       {"output.vtk_every", "3", [](const Scenario& s) { return s.output.vtkEvery == 3; }},
   };

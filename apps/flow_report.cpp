@@ -1,0 +1,52 @@
+#include "flow_report.h"
+
+namespace hs::app {
+namespace {
+
+constexpr double kMlPerM3 = 1e6;
+constexpr double kLitresPerMinutePerM3PerSecond = 1e3 * 60;
+
+}  // namespace
+
+cardiac::ValveFlows stepFlows(const cardiac::Circulation& circulation) {
+  const cardiac::FlowStep& s = circulation.lastStep();
+  const double v = double(circulation.particleVolume());
+  return {double(s.mitralForward) * v, double(s.mitralBackward) * v, double(s.aorticForward) * v,
+          double(s.aorticBackward) * v};
+}
+
+void writeFlowHeader(std::ostream& csv) {
+  csv << ",mitral_open,aortic_open,particles_inflow_vessel,particles_lv,particles_outflow_vessel,"
+         "particles_returning,particles_outside,mitral_forward_ml,mitral_backward_ml,aortic_forward_ml,"
+         "aortic_backward_ml,pressure_inflow_vessel_pa,pressure_lv_pa,pressure_outflow_vessel_pa";
+}
+
+void writeFlowRow(std::ostream& csv, const cardiac::Circulation& circulation) {
+  using cardiac::FlowRegion;
+  const cardiac::FlowStep& s = circulation.lastStep();
+  const cardiac::ValveFlows f = stepFlows(circulation);
+  auto count = [&](FlowRegion r) { return s.count[std::size_t(r)]; };
+  auto pressure = [&](FlowRegion r) { return s.pressure[std::size_t(r)]; };
+  csv << ',' << int(s.valves.mitralOpen) << ',' << int(s.valves.aorticOpen) << ','
+      << count(FlowRegion::InflowVessel) << ',' << count(FlowRegion::Ventricle) << ','
+      << count(FlowRegion::OutflowVessel) << ',' << count(FlowRegion::Parked) << ',' << count(FlowRegion::Outside)
+      << ',' << f.mitralForward * kMlPerM3 << ',' << f.mitralBackward * kMlPerM3 << ','
+      << f.aorticForward * kMlPerM3 << ',' << f.aorticBackward * kMlPerM3 << ','
+      << pressure(FlowRegion::InflowVessel) << ',' << pressure(FlowRegion::Ventricle) << ','
+      << pressure(FlowRegion::OutflowVessel);
+}
+
+nlohmann::ordered_json heartPumpReport(const cardiac::BeatTracker& beats) {
+  const cardiac::BeatMeans m = beats.means();
+  return {{"beats", beats.beats().size()},
+          {"beats_averaged", m.count},
+          {"edv_ml", m.edv * kMlPerM3},
+          {"esv_ml", m.esv * kMlPerM3},
+          {"stroke_volume_ml", m.strokeVolume * kMlPerM3},
+          {"ejection_fraction", m.ejectionFraction},
+          {"cardiac_output_l_min", m.cardiacOutput * kLitresPerMinutePerM3PerSecond},
+          {"regurgitant_volume_ml", m.regurgitantVolume * kMlPerM3},
+          {"aortic_forward_volume_ml", m.forwardAortic * kMlPerM3}};
+}
+
+}  // namespace hs::app
