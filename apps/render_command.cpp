@@ -272,7 +272,8 @@ int renderCommand(const RenderOptions& options) {
     if (!scenario.description.empty()) title += ": " + scenario.description;
     std::string footer;
     if (sim.hasHeart())
-      footer += "wall: red = myocardium, light = base plate and vessels, dark = cut face" +
+      footer += "wall: red = myocardium, orange = chosen beating region, light = base plate and vessels, "
+                "dark = cut face" +
                 std::string(sceneOptions.clip ? " (front view cut open at z = " + formatTime(options.clipZ) + " m)" : "");
     if (sim.hasBlood())
       footer += std::string(footer.empty() ? "" : "; ") + "blood coloured by speed, blue 0 to yellow " +

@@ -27,7 +27,8 @@ std::vector<Vec3f> boxEdges(const Vec3f& lo, const Vec3f& hi) {
 // Vertex normals that stay smooth across gentle bends and keep creases (the wall's rim, the
 // vessel ends): each triangle corner averages the area-weighted normals of the triangles at
 // its vertex that lie within ~50 degrees of its own.
-void addWall(const cardiac::HeartSimulation& sim, WallMesh& wall) {
+// beating: per model vertex, nonzero = drawn in beatingColour (may be empty).
+void addWall(const cardiac::HeartSimulation& sim, const std::vector<std::uint8_t>& beating, WallMesh& wall) {
   const auto& model = sim.model();
   const auto& x = sim.particles().position;
   const std::size_t n = model.surface.size();
@@ -50,7 +51,8 @@ void addWall(const cardiac::HeartSimulation& sim, WallMesh& wall) {
         if (faceNormal[g].normalized().dot(own) >= kCreaseCos) sum += faceNormal[g];
       wall.positions.push_back(toVec3f(x[v]));
       wall.normals.push_back(sum.squaredNorm() > 0 ? sum.normalized() : own);
-      wall.colours.push_back(regionColour(model.region[v]));
+      const Vec3f colour = regionColour(model.region[v]);
+      wall.colours.push_back(v < beating.size() && beating[v] ? beatingColour(colour) : colour);
     }
   }
 }
@@ -65,6 +67,22 @@ Vec3f regionColour(cardiac::Region region) {
     case cardiac::Region::OutflowVessel: return {0.96f, 0.74f, 0.62f};
   }
   return {1, 1, 1};
+}
+
+Vec3f beatingColour(const Vec3f& base) {
+  // Two thirds of the way to a saturated orange: on the red myocardium (0.80, 0.27, 0.30) this
+  // gives (0.93, 0.53, 0.17), orange in light and in shade alike.
+  const Vec3f orange(1.0f, 0.66f, 0.10f);
+  return base / 3 + orange * (2.0f / 3);
+}
+
+std::vector<std::uint8_t> chosenBeatingRegion(const cardiac::HeartSimulation& sim) {
+  const cardiac::CycleSettings& cycle = sim.scenario().cycle;
+  const bool chosen = !cycle.segments.empty() || !cycle.vertices.empty() || cycle.sphereEnabled;
+  if (!sim.hasHeart() || !cycle.enabled || !chosen) return {};
+  std::vector<std::uint8_t> flags(sim.model().mesh.vertices.size(), 0);
+  for (const cardiac::Index v : cardiac::selectBeatingVertices(cycle, sim.model())) flags[v] = 1;
+  return flags;
 }
 
 Vec3f speedColour(double fraction) {
@@ -118,7 +136,7 @@ Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& option
   scene.bounds = sceneBounds(sim);
   const auto& s = sim.scenario();
   if (sim.hasHeart()) {
-    addWall(sim, scene.wall);
+    addWall(sim, options.beating ? *options.beating : chosenBeatingRegion(sim), scene.wall);
     scene.wall.opacity = std::clamp(options.wallOpacity, 0.05f, 1.0f);
   }
   if (options.clip) {

@@ -2,6 +2,10 @@
 // From a simulation to a render::Scene: the heart wall's surface at the current particle
 // positions (crease-aware smooth normals, coloured by region), blood particles coloured by
 // speed, the container as a wireframe box, and the speed legend drawn into a finished image.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
 #include "cardiac/heart_simulation.h"
 #include "render/renderer.h"
 #include "viz/image.h"
@@ -15,10 +19,21 @@ struct SceneOptions {
   float clipZ = 0;        // m
   float wallOpacity = 1;  // < 1: see-through wall
   double speedMax = 0;    // m/s at the top of the colour scale; 0: defaultSpeedScale(scenario)
+  // The beating region drawn in beatingColour (thesis 4.3.3, Fig. 4.7): per model vertex,
+  // nonzero = tinted. Unset: the region the scenario chose (cycle.segments, vertices or
+  // sphere) while its cycle is on; a scenario where the whole myocardium beats singles nothing
+  // out, so its pictures look as they always did. The viewer passes its live selection.
+  std::optional<std::vector<std::uint8_t>> beating;
 };
 
 // Region colours (linear RGB in [0, 1]): myocardium red-pink, base plate and vessels lighter.
 Vec3f regionColour(cardiac::Region region);
+// A beating vertex's colour: the wall's colour turned orange, distinct from the red
+// myocardium at rest and from the pale vessels.
+Vec3f beatingColour(const Vec3f& base);
+// Per model vertex, 1 = in the region the scenario chose to beat; empty when it chose none
+// (the whole myocardium beats), has no heart, or its cycle is off.
+std::vector<std::uint8_t> chosenBeatingRegion(const cardiac::HeartSimulation& sim);
 // Slow (blue) to fast (yellow) through cyan and green; fraction is clamped to [0, 1].
 Vec3f speedColour(double fraction);
 viz::Rgb toRgb(const Vec3f& colour);

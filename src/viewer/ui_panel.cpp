@@ -151,6 +151,11 @@ void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
   ImGui::Spacing();
   sectionTitle("Scenario");
   scenarioSection(controls, status, scenarios);
+  if (status.hasHeart) {
+    ImGui::Spacing();
+    sectionTitle("Beating region");
+    drawRegionSection(controls.region, status.region);
+  }
   ImGui::Spacing();
   sectionTitle("Display");
   displaySection(controls, status);
@@ -160,6 +165,10 @@ void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
     ImGui::TextColored(ImVec4(0.85f, 0.3f, 0.32f, 1), "red");
     ImGui::SameLine();
     ImGui::TextUnformatted("myocardium, dark red: cut face");
+    const render::Vec3f beating = render::beatingColour(render::regionColour(cardiac::Region::Myocardium));
+    ImGui::TextColored(ImVec4(beating.x(), beating.y(), beating.z(), 1), "orange");
+    ImGui::SameLine();
+    ImGui::TextUnformatted("the chosen beating region");
     ImGui::TextUnformatted("light: base plate and vessels");
   }
   if (status.hasBlood) {
@@ -216,6 +225,11 @@ void drawHelpWindow(bool& open, int windowWidth, int windowHeight) {
       {"S", "single step (pauses)"},
       {"Backspace", "restart the scenario"},
       {"P", "screenshot (PNG in the working directory)"},
+      {"B", "paint mode on / off (beating region)"},
+      {"left drag (paint mode)", "add the wall under the brush"},
+      {"Shift + left drag", "remove it (paint mode)"},
+      {"[ / ]", "smaller / larger brush"},
+      {"Enter", "apply the region (restarts from t = 0)"},
       {"H / F1", "this help"},
       {"Esc", "quit"},
   };

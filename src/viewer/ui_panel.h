@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "render/renderer.h"
+#include "viewer/region_panel.h"
 
 namespace hs::viewer {
 
@@ -22,6 +23,7 @@ struct ViewerControls {
   float clipZ = 0;  // m: what lies at z > clipZ is cut away
   float wallOpacity = 1;
   bool showHelp = false;
+  RegionControls region;  // the beating region: bull's-eye, brush, Apply
 
   bool stepRequested = false;
   bool resetRequested = false;
@@ -47,6 +49,7 @@ struct ViewerStatus {
   double speedMax = 1;              // m/s at the top of the blood colour scale
   float clipMin = -1, clipMax = 1;  // range of the clipping plane's slider (m)
   std::string message;              // last event: "saved viewer.png", "simulation became invalid ..."
+  RegionStatus region;
 };
 
 // Width of the control panel in pixels (the camera frames the rest of the window).

@@ -20,8 +20,9 @@
 #include "render/renderer.h"
 #include "render/scene.h"
 #include "viewer/camera_controller.h"
+#include "viewer/region_editor.h"
 #include "viewer/ui_panel.h"
-#include "viz/image.h"
+#include "viewer/viewer_window.h"
 
 namespace hs::viewer {
 
@@ -40,81 +41,6 @@ bool Pacing::settle(long owed, long taken, double dt) {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// GLFW reports errors through a callback without a user pointer; the last message is kept
-// here for the one-line error of a failed start.
-std::string& lastGlfwError() {
-  static std::string message;
-  return message;
-}
-
-void onGlfwError(int /*code*/, const char* description) {
-  lastGlfwError() = description ? description : "unknown";
-}
-
-// GLFW's window and library as one owner, so every exit path releases them.
-struct Window {
-  GLFWwindow* handle = nullptr;
-  Window(int width, int height) {
-    glfwSetErrorCallback(onGlfwError);
-    if (!glfwInit())
-      throw DisplayError("`heartsim view` needs a display (" + lastGlfwError() +
-                         "); `heartsim render` draws images without one");
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    glfwWindowHint(GLFW_SAMPLES, 4);
-    handle = glfwCreateWindow(width, height, "heartsim", nullptr, nullptr);
-    if (!handle) {
-      glfwTerminate();
-      throw DisplayError("`heartsim view` cannot open an OpenGL 3.3 window (" + lastGlfwError() +
-                         "); `heartsim render` draws images without a display");
-    }
-    glfwMakeContextCurrent(handle);
-    glfwSwapInterval(1);
-  }
-  ~Window() {
-    glfwDestroyWindow(handle);
-    glfwTerminate();
-  }
-  Window(const Window&) = delete;
-  Window& operator=(const Window&) = delete;
-};
-
-struct ImGuiSession {
-  explicit ImGuiSession(GLFWwindow* window) {
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the user's working directory
-    ImGui::StyleColorsLight();
-    ImGui::GetStyle().WindowRounding = 0;
-    ImGui_ImplGlfw_InitForOpenGL(window, true);  // chains to the callbacks installed before
-    ImGui_ImplOpenGL3_Init("#version 330 core");
-  }
-  ~ImGuiSession() {
-    ImGui_ImplOpenGL3_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
-  }
-  ImGuiSession(const ImGuiSession&) = delete;
-  ImGuiSession& operator=(const ImGuiSession&) = delete;
-};
-
-// The back buffer as drawn so far (before the swap), top row first.
-viz::Image readBackBuffer(int width, int height) {
-  std::vector<std::uint8_t> rgb(std::size_t(width) * std::size_t(height) * 3);
-  glReadBuffer(GL_BACK);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
-  viz::Image image(width, height);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      const std::size_t i = (std::size_t(height - 1 - y) * std::size_t(width) + std::size_t(x)) * 3;
-      image.set(x, y, {rgb[i], rgb[i + 1], rgb[i + 2]});
-    }
-  return image;
-}
 
 class ViewerApp {
  public:
@@ -156,6 +82,7 @@ class ViewerApp {
   std::unique_ptr<CameraController> m_camera;
   ViewerControls m_controls;
   ViewerStatus m_status;
+  RegionEditor m_region;
   Pacing m_pacing;
   Clock::time_point m_lastFrame;
   double m_scroll = 0;
@@ -171,6 +98,7 @@ class ViewerApp {
       s.cycle.mode = cardiac::TimingMode::Physiological;
       s.cycle.heartRateBpm = cardiac::Real(m_controls.heartRateBpm);
     }
+    m_region.configure(s);
     return s;
   }
 
@@ -179,8 +107,10 @@ class ViewerApp {
     m_baseScenario = scenario;
     m_controls.cycleEnabled = scenario.cycle.enabled;
     m_controls.heartRateBpm = float(scenario.cycle.heartRateBpm);
+    m_region = RegionEditor();  // a region applied to the last scenario is not this one's
     restart();
     if (!m_sim) return;
+    m_region.startScenario(*m_sim, m_controls.region);
     m_controls.clip = m_sim->hasHeart();
     const render::Box bounds = render::sceneBounds(*m_sim);
     m_status.clipMin = bounds.min.z();
@@ -226,7 +156,10 @@ class ViewerApp {
       for (const int button : kButtons)
         if (glfwGetMouseButton(m_window.handle, button) == GLFW_PRESS) m_dragButton = button;
     const auto dx = float(x - m_lastX), dy = float(y - m_lastY);
-    if (m_dragButton == GLFW_MOUSE_BUTTON_LEFT)
+    RegionControls& region = m_controls.region;
+    if (m_dragButton == GLFW_MOUSE_BUTTON_LEFT && region.paintMode)
+      paintStroke(float(m_lastX), float(m_lastY), float(x), float(y), w, h, io.KeyShift);
+    else if (m_dragButton == GLFW_MOUSE_BUTTON_LEFT)
       m_camera->orbit(dx, dy, h);
     else if (m_dragButton >= 0)
       m_camera->pan(dx, dy, h);
@@ -246,11 +179,19 @@ class ViewerApp {
     if (pressed(GLFW_KEY_BACKSPACE)) m_controls.resetRequested = true;
     if (pressed(GLFW_KEY_P)) m_controls.screenshotRequested = true;
     if (pressed(GLFW_KEY_H) || pressed(GLFW_KEY_F1)) m_controls.showHelp = !m_controls.showHelp;
+    if (pressed(GLFW_KEY_B) && m_region.available()) region.paintMode = !region.paintMode;
+    // Each press scales the brush by 1.25, so the range is crossed in a dozen presses.
+    if (ImGui::IsKeyPressed(GLFW_KEY_LEFT_BRACKET, true)) region.brushRadiusPx /= 1.25f;
+    if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT_BRACKET, true)) region.brushRadiusPx *= 1.25f;
+    region.brushRadiusPx =
+        std::clamp(region.brushRadiusPx, RegionControls::kMinBrushPx, RegionControls::kMaxBrushPx);
+    if (pressed(GLFW_KEY_ENTER) || pressed(GLFW_KEY_KP_ENTER)) region.applyRequested = true;
     if (pressed(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(m_window.handle, GLFW_TRUE);
   }
 
   void applyRequests() {
     ViewerControls& c = m_controls;
+    const bool regionApplied = m_region.handleRequests(c.region);
     if (c.scenarioChanged && c.scenarioIndex >= 0) {
       const std::string& name = m_scenarios[std::size_t(c.scenarioIndex)];
       try {
@@ -258,13 +199,48 @@ class ViewerApp {
       } catch (const std::exception& e) {
         m_status.message = "cannot load " + name + ": " + e.what();
       }
-    } else if (c.resetRequested || c.cycleChanged) {
+    } else if (regionApplied || c.resetRequested || c.cycleChanged) {
       restart();
+      if (regionApplied && m_status.message.empty())
+        m_status.message = "beating region applied: " + std::to_string(m_region.selection().count()) +
+                           " vertices; restarted from t = 0";
     }
     if (c.viewRequested) resetCamera(*c.viewRequested);
     if (c.resetCameraRequested) resetCamera(render::View::Front);
     c.scenarioChanged = c.resetRequested = c.cycleChanged = c.resetCameraRequested = false;
     c.viewRequested.reset();
+  }
+
+  // Paints along the cursor's path since the last frame (window pixels), every half brush
+  // radius, so a fast stroke leaves no gaps.
+  void paintStroke(float x0, float y0, float x1, float y1, int width, int height, bool erase) {
+    if (!m_sim->hasHeart()) return;
+    BrushQuery query;
+    query.view = brushView(m_camera->camera(), width, height);
+    query.radius = m_controls.region.brushRadiusPx;
+    // The scene's cut (render::buildScene): what it removes cannot be painted.
+    query.clip.enabled = m_controls.clip;
+    query.clip.normal = render::Vec3f(0, 0, 1);
+    query.clip.offset = -m_controls.clipZ;
+    const float length = std::hypot(x1 - x0, y1 - y0);
+    const int steps = std::max(1, int(std::ceil(length / (0.5f * query.radius))));
+    for (int i = 1; i <= steps; ++i) {
+      const float t = float(i) / float(steps);
+      query.centreX = x0 + t * (x1 - x0);
+      query.centreY = y0 + t * (y1 - y0);
+      m_region.paint(*m_sim, query, erase, m_controls.region);
+    }
+  }
+
+  // The brush's outline at the cursor while painting: orange adds, blue removes (Shift).
+  void drawBrushOutline() const {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (!m_controls.region.paintMode || io.WantCaptureMouse || !m_sim->hasHeart()) return;
+    const float r = m_controls.region.brushRadiusPx;
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    draw->AddCircle(io.MousePos, r, IM_COL32(30, 30, 30, 200), 48, 3.0f);
+    draw->AddCircle(io.MousePos, r, io.KeyShift ? IM_COL32(90, 170, 255, 255) : IM_COL32(255, 170, 40, 255),
+                    48, 1.5f);
   }
 
   // Steps toward wall time within the frame's budget; the achieved pace goes to the status.
@@ -318,6 +294,14 @@ class ViewerApp {
     m_status.cavityMl = sim.hasHeart() ? double(sim.cavityVolume()) * 1e6 : -1;
     m_status.speedMax = render::defaultSpeedScale(sim.scenario());
     m_status.frameMs += 0.1 * (frameSeconds * 1000 - m_status.frameMs);
+    m_region.fillStatus(m_status.region, sim.scenario().cycle.enabled);
+    int w = 0, h = 0;
+    glfwGetWindowSize(m_window.handle, &w, &h);
+    // The length of a pixel at the camera's target, where the heart is.
+    const double pixel = 2 * double(m_camera->distance()) *
+                         std::tan(double(m_camera->camera().fovyDegrees) * M_PI / 360) /
+                         double(std::max(h, 1));
+    m_status.region.brushWorldRadius = pixel * double(m_controls.region.brushRadiusPx);
   }
 
   void saveScreenshot(const std::string& path, int width, int height) {
@@ -355,6 +339,7 @@ class ViewerApp {
     drawControlPanel(m_controls, m_status, m_scenarios, h);
     drawStatusOverlay(m_status, w);
     drawHelpWindow(m_controls.showHelp, w, h);
+    drawBrushOutline();
     ImGui::Render();
 
     if (fbw > 0 && fbh > 0) {
@@ -362,6 +347,7 @@ class ViewerApp {
       options.clip = m_controls.clip && m_sim->hasHeart();
       options.clipZ = m_controls.clipZ;
       options.wallOpacity = m_controls.wallOpacity;
+      options.beating = m_region.highlight(m_controls.region);
       render::Scene scene = render::buildScene(*m_sim, options);
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       m_renderer->draw(scene, m_camera->camera(), fbw, fbh);

@@ -107,3 +107,45 @@ TEST(Scene, TheCutIsMadeOnlyInViewsThatLookAtIt) {
 }
 
 }  // namespace
+
+// Thesis 4.3.3 / Fig. 4.7: the region the scenario chose to beat is drawn orange; the default
+// (the whole myocardium beats) singles nothing out, and an explicit highlight overrides both.
+TEST(Scene, RenderTintsTheChosenBeatingRegion) {
+  hs::cardiac::Scenario scenario;
+  scenario.cycle.segments = {1, 2, 7};
+  const hs::cardiac::HeartSimulation sim(scenario, 1);
+  const auto& model = sim.model();
+  const auto colourOf = [&](const hs::render::Scene& scene, std::size_t f, int k) {
+    return scene.wall.colours[3 * f + k];
+  };
+  const hs::render::Scene chosen = hs::render::buildScene(sim, {});
+  std::size_t tinted = 0;
+  for (std::size_t f = 0; f < model.surface.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto v = model.surface[f][k];
+      const Vec3f base = hs::render::regionColour(model.region[v]);
+      const bool beats = model.region[v] == hs::cardiac::Region::Myocardium &&
+                         (model.segment[v] == 1 || model.segment[v] == 2 || model.segment[v] == 7);
+      EXPECT_EQ(colourOf(chosen, f, k), beats ? hs::render::beatingColour(base) : base) << "vertex " << v;
+      tinted += beats;
+    }
+  EXPECT_GT(tinted, 0u);
+  // Orange: clearly apart from the red myocardium, redder than green, little blue.
+  const Vec3f red = hs::render::regionColour(hs::cardiac::Region::Myocardium);
+  const Vec3f orange = hs::render::beatingColour(red);
+  EXPECT_GT((orange - red).norm(), 0.25f);
+  EXPECT_GT(orange.x(), orange.y());
+  EXPECT_GT(orange.y(), orange.z() + 0.2f);
+
+  hs::render::SceneOptions none;
+  none.beating = std::vector<std::uint8_t>{};
+  const hs::render::Scene plain = hs::render::buildScene(sim, none);
+  for (std::size_t i = 0; i < plain.wall.colours.size(); ++i)
+    EXPECT_EQ(plain.wall.colours[i], hs::render::regionColour(model.region[model.surface[i / 3][i % 3]]));
+
+  scenario.cycle.enabled = false;  // nothing beats: nothing tinted
+  const hs::cardiac::HeartSimulation resting(scenario, 1);
+  EXPECT_TRUE(hs::render::chosenBeatingRegion(resting).empty());
+  EXPECT_TRUE(
+      hs::render::chosenBeatingRegion(hs::cardiac::HeartSimulation(hs::cardiac::Scenario{}, 1)).empty());
+}
