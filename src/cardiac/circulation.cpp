@@ -62,6 +62,7 @@ Circulation::Circulation(const LvModel& model, const CirculationSettings& settin
   m_apexAxisOrigin = Vec3(0, m_mitral.centre.y(), 0);  // the spheroid's centre on the base plane
   m_midWallRadius = g.endoRadius + Real(0.5) * g.wallThickness;
   m_midWallLongAxis = g.endoLongAxis + Real(0.5) * g.wallThickness;
+  m_plateMid = Real(0.5) * g.baseThickness;
   m_spacing = blood.spacing;
   m_radius = blood.radius;
   m_restDensity = blood.restDensity;
@@ -86,20 +87,22 @@ Circulation::Circulation(const LvModel& model, const CirculationSettings& settin
 
 FlowRegion Circulation::classify(const Vec3& x) const {
   if (!x.allFinite()) return FlowRegion::Outside;
-  if (x.y() < m_mitral.centre.y()) {
-    // Inside the mid-wall spheroid: the cavity, however the wall has moved (a particle beyond
-    // it went through the wall).
-    const Vec3 q = x - m_apexAxisOrigin;
-    const Real e = (q.x() * q.x() + q.z() * q.z()) / (m_midWallRadius * m_midWallRadius) +
-                   (q.y() * q.y()) / (m_midWallLongAxis * m_midWallLongAxis);
-    return e <= Real(1) ? FlowRegion::Ventricle : FlowRegion::Outside;
+  // Past a valve's plane inside its lumen (with a radius of slack for particles touching the
+  // lumen wall): that vessel. The valve planes are the regions' borders, as for the flows.
+  if (x.y() >= m_mitral.centre.y()) {
+    if (m_mitral.radial(x) < m_mitral.radius + m_radius && x.y() <= m_inflowTop + m_spacing)
+      return FlowRegion::InflowVessel;
+    if (m_aortic.radial(x) < m_aortic.radius + m_radius && x.y() <= m_outflowTop + m_spacing)
+      return FlowRegion::OutflowVessel;
   }
-  // Above the base: inside a lumen (with a radius of slack for particles touching its wall).
-  if (m_mitral.radial(x) < m_mitral.radius + m_radius && x.y() <= m_inflowTop + m_spacing)
-    return FlowRegion::InflowVessel;
-  if (m_aortic.radial(x) < m_aortic.radius + m_radius && x.y() <= m_outflowTop + m_spacing)
-    return FlowRegion::OutflowVessel;
-  return FlowRegion::Outside;
+  // Inside the mid-wall spheroid, continued as a cylinder up to the base plate's middle: the
+  // cavity, however the wall has moved. A particle beyond it went through the wall.
+  if (x.y() >= m_mitral.centre.y() + m_plateMid) return FlowRegion::Outside;
+  Vec3 q = x - m_apexAxisOrigin;
+  q.y() = std::min(q.y(), Real(0));
+  const Real e = (q.x() * q.x() + q.z() * q.z()) / (m_midWallRadius * m_midWallRadius) +
+                 (q.y() * q.y()) / (m_midWallLongAxis * m_midWallLongAxis);
+  return e <= Real(1) ? FlowRegion::Ventricle : FlowRegion::Outside;
 }
 
 bool Circulation::parked(Index particle) const {

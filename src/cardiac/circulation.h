@@ -129,6 +129,7 @@ class Circulation {
   Real m_inflowLength = 0;
   Vec3 m_apexAxisOrigin = Vec3::Zero();  // the endocardial spheroid's centre (lv_model.h)
   Real m_midWallRadius = 0, m_midWallLongAxis = 0;
+  Real m_plateMid = 0;  // half the base plate's thickness
   Real m_spacing = 0, m_radius = 0, m_restDensity = 0, m_particleVolume = 0;
   std::vector<Vec3> m_inletSites;  // lattice sites across the inflow vessel's far end
   Vec3 m_parkingOrigin = Vec3::Zero();

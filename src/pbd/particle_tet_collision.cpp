@@ -14,6 +14,10 @@ namespace {
 // Below this many particles a fork-join costs more than the loop saves.
 constexpr std::ptrdiff_t kParallelThreshold = 256;
 
+// Rounds of "out through the nearest boundary face" for a particle a push left inside
+// another tet; two faces of a corner need one each, and a few more cover three-face corners.
+constexpr int kSettleRounds = 4;
+
 std::vector<Tet> shifted(std::vector<Tet> tets, Index offset) {
   for (Tet& t : tets)
     for (Index& v : t) v += offset;
@@ -157,7 +161,22 @@ bool ParticleTetCollider::pushOut(const std::vector<Vec3>& p, const std::vector<
   // The step across an inner face found no tet (the faces did not quite meet): finish the
   // push from the last entry.
   if (walking) x = entry - settings.radius * ray;
+  // A push out of one face can land in the tet behind another (a concave corner of the
+  // surface, where the cavity meets the base plate): out through the nearest boundary face
+  // again, as the static mesh collider repeats its contacts, until no tet holds the particle.
+  if (changed) {
+    for (int round = 0; round < kSettleRounds && insideAnyTet(p, x); ++round)
+      x = nearestBoundaryExit(p, x, settings.radius, contact);
+  }
   return changed;
+}
+
+bool ParticleTetCollider::insideAnyTet(const std::vector<Vec3>& p, const Vec3& x) const {
+  bool inside = false;
+  m_grid.forEachCandidate(x, [&](Index t) {
+    if (!inside && isPointInTet(tetPoints(p, m_tets[t]), x, kBarycentricSlack)) inside = true;
+  });
+  return inside;
 }
 
 std::size_t ParticleTetCollider::resolve(Particles& particles, Index first, Index end,

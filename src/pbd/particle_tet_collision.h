@@ -127,6 +127,7 @@ class ParticleTetCollider {
   // last push.
   bool pushOut(const std::vector<Vec3>& p, const std::vector<Vec3>& start, Vec3& x, const Vec3& previous,
                const ParticleTetSettings& settings, WallContact& contact) const;
+  bool insideAnyTet(const std::vector<Vec3>& p, const Vec3& x) const;
   Vec3 nearestBoundaryExit(const std::vector<Vec3>& x, const Vec3& p, Real radius,
                            WallContact& contact) const;
 
