@@ -1,0 +1,83 @@
+// `heartsim run` with heart and blood: the thesis's four experiments (Table 5.5) run their
+// 400 steps with nothing lost and no particle left inside the wall, report the flow columns
+// and the pump figures, and a bad blood start is a one-line error.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "cli_runner.h"
+
+namespace {
+
+using hs::testing::CliResult;
+using hs::testing::readFile;
+using hs::testing::runHeartsim;
+using hs::testing::scratchDir;
+
+class PaperScenario : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(PaperScenario, RunsTwoSecondsWithNothingLostAndNothingInsideTheWall) {
+  const std::string name = GetParam();
+  const auto dir = scratchDir("paper_" + name);
+  const CliResult r = runHeartsim("run " + name + " --threads 2 --json --out out", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("steps").get<int>(), 400);  // 2 s at dt = 5 ms, as in the thesis
+  const auto& b = j.at("blood");
+  EXPECT_EQ(b.at("particles").get<int>(), 1000);
+  EXPECT_EQ(b.at("lost").get<int>(), 0);
+  EXPECT_EQ(b.at("inside_wall").get<int>(), 0);
+  const auto& h = j.at("heart");
+  for (const char* key : {"beats", "edv_ml", "esv_ml", "stroke_volume_ml", "ejection_fraction",
+                          "cardiac_output_l_min", "regurgitant_volume_ml"})
+    EXPECT_TRUE(h.contains(key)) << key;
+  const bool beating = name.find("beating") != std::string::npos;
+  EXPECT_EQ(h.at("beats").get<int>() > 0, beating);
+  // Every step's particles are accounted for, region by region.
+  std::istringstream csv(readFile(dir / "out" / "metrics.csv"));
+  std::string header, row;
+  std::getline(csv, header);
+  for (const char* column : {"mitral_open", "aortic_open", "particles_lv", "mitral_forward_ml",
+                             "aortic_backward_ml", "pressure_lv_pa"})
+    EXPECT_NE(header.find(column), std::string::npos) << column;
+  int rows = 0;
+  while (std::getline(csv, row)) ++rows;
+  EXPECT_EQ(rows, 400);
+  std::printf("%s: wall %.2f s for 400 steps, EF %.3f, inside_wall %d, lost %d\n", name.c_str(),
+              j.at("wall_s").get<double>(), h.at("ejection_fraction").get<double>(),
+              b.at("inside_wall").get<int>(), b.at("lost").get<int>());
+}
+
+INSTANTIATE_TEST_SUITE_P(CliHeartBlood, PaperScenario,
+                         ::testing::Values("paper-vessel", "paper-vessel-beating", "paper-chamber",
+                                           "paper-chamber-beating"),
+                         [](const auto& param) {
+                           std::string n = param.param;
+                           for (char& c : n)
+                             if (c == '-') c = '_';
+                           return n;
+                         });
+
+TEST(CliHeartBlood, VesselStartWithoutAHeartIsAOneLineError) {
+  const auto dir = scratchDir("vessel_no_heart");
+  const CliResult r =
+      runHeartsim("run dam-break --set blood.start=vessel --set blood.particles=10", dir);
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("blood.start"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("vessel"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+TEST(CliHeartBlood, UnknownValveModeIsAOneLineError) {
+  const auto dir = scratchDir("bad_valves");
+  const CliResult r = runHeartsim("run paper-chamber --set circulation.valves=sometimes", dir);
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("circulation.valves"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+}  // namespace
