@@ -46,7 +46,7 @@ nlohmann::ordered_json heartPumpReport(const cardiac::BeatTracker& beats) {
           {"ejection_fraction", m.ejectionFraction},
           {"cardiac_output_l_min", m.cardiacOutput * kLitresPerMinutePerM3PerSecond},
           {"regurgitant_volume_ml", m.regurgitantVolume * kMlPerM3},
-          {"aortic_forward_volume_ml", m.forwardAortic * kMlPerM3}};
+          {"aortic_net_forward_ml", m.aorticNet * kMlPerM3}};
 }
 
 }  // namespace hs::app

@@ -19,6 +19,8 @@ void BeatTracker::record(double time, Phase phase, double volume, const ValveFlo
   m_lastVolume = volume;
   if (!m_open) return;
   m_current.flows += flows;
+  if (phase == Phase::Systole) m_current.mitralNetInSystole += flows.mitralForward - flows.mitralBackward;
+  else m_current.aorticNetInDiastole += flows.aorticForward - flows.aorticBackward;
   m_current.duration = time + m_stepLength - m_current.startTime;
   if (phase != Phase::Systole) m_systoleEnded = true;
   m_current.esv = std::min(m_current.esv, volume);
@@ -42,12 +44,12 @@ BeatMeans BeatTracker::means() const {
     ++m.count;
     m.edv += b.edv, m.esv += b.esv, m.strokeVolume += b.strokeVolume();
     m.ejectionFraction += b.ejectionFraction(), m.cardiacOutput += b.cardiacOutput();
-    m.regurgitantVolume += b.regurgitantVolume(), m.forwardAortic += b.flows.aorticForward;
+    m.regurgitantVolume += b.regurgitantVolume(), m.aorticNet += b.flows.aorticForward - b.flows.aorticBackward;
   }
   if (m.count == 0) return m;
   const double n = double(m.count);
   m.edv /= n, m.esv /= n, m.strokeVolume /= n, m.ejectionFraction /= n, m.cardiacOutput /= n;
-  m.regurgitantVolume /= n, m.forwardAortic /= n;
+  m.regurgitantVolume /= n, m.aorticNet /= n;
   return m;
 }
 

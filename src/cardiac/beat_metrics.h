@@ -4,6 +4,7 @@
 // cavity volume when its systole starts; ESV its smallest volume; SV = EDV - ESV,
 // EF = SV / EDV. A beat counts once its systole has ended: a run that stops mid-systole does
 // not report a half-ejected beat.
+#include <algorithm>
 #include <vector>
 
 #include "cardiac/beat_clock.h"
@@ -28,12 +29,20 @@ struct BeatSummary {
   double edv = 0;         // m^3
   double esv = 0;         // m^3
   ValveFlows flows;       // over the beat
+  // Net forward volume (m^3, forward - backward) through the mitral valve during systole and
+  // through the aortic valve during diastole: the phases in which each should be shut.
+  double mitralNetInSystole = 0, aorticNetInDiastole = 0;
   [[nodiscard]] double strokeVolume() const { return edv - esv; }
   [[nodiscard]] double ejectionFraction() const { return edv > 0 ? (edv - esv) / edv : 0; }
   // Cardiac output (m^3/s): the stroke volume once per beat, CO = SV / beat length.
   [[nodiscard]] double cardiacOutput() const { return duration > 0 ? strokeVolume() / duration : 0; }
-  // Blood that went the wrong way through either valve during the beat (m^3).
-  [[nodiscard]] double regurgitantVolume() const { return flows.mitralBackward + flows.aorticBackward; }
+  // Regurgitant volume (m^3): blood that went back through a valve while it should have been
+  // shut, the net backward flow through the mitral valve in systole plus that through the
+  // aortic valve in diastole. Particles that cross an open valve's plane to and fro count
+  // both ways in `flows` and cancel here.
+  [[nodiscard]] double regurgitantVolume() const {
+    return std::max(0.0, -mitralNetInSystole) + std::max(0.0, -aorticNetInDiastole);
+  }
 };
 
 // Means over the complete beats after the first (the first starts from the initial state):
@@ -41,7 +50,7 @@ struct BeatSummary {
 struct BeatMeans {
   int count = 0;
   double edv = 0, esv = 0, strokeVolume = 0, ejectionFraction = 0, cardiacOutput = 0, regurgitantVolume = 0;
-  double forwardAortic = 0;  // m^3 per beat
+  double aorticNet = 0;  // m^3 per beat through the aortic valve, forward - backward
 };
 
 class BeatTracker {

@@ -185,12 +185,14 @@ std::vector<Vec3> bloodStartPositions(const Scenario& scenario, const LvModel* m
   if (b.start == BloodSettings::Start::Vessel) {
     std::vector<Vec3> x = vesselLattice(scenario, *model);
     if (b.particles > 0) {
-      if (x.size() < std::size_t(b.particles))
+      // With the closed loop the rest waits in the body and enters through the inflow vessel
+      // (HeartSimulation); without it every particle needs a site.
+      if (x.size() < std::size_t(b.particles) && !scenario.circulation.loop)
         throw std::invalid_argument("blood.particles: the inflow vessel and the chamber hold " +
                                     str(double(x.size())) + " particles at spacing " + str(b.spacing) +
                                     " m, expected at least " + str(double(b.particles)) +
                                     "; lower blood.particles or blood.spacing");
-      x.resize(std::size_t(b.particles));  // the vessel from its bottom up, then the cavity
+      x.resize(std::min(x.size(), std::size_t(b.particles)));  // the vessel from its bottom up, then the cavity
     }
     return x;
   }

@@ -32,7 +32,8 @@ pbd::FluidStepSettings bloodSolverSettings(const Scenario& scenario, int threads
 // Throws std::invalid_argument when the block holds too few sites, when the start block is
 // not inside the container, or when the particles would not fit in this machine's memory.
 // blood.start = "vessel" fills the inflow vessel of `model` (from its bottom up), then the
-// cavity from the base down; it needs the model.
+// cavity from the base down; it needs the model. With circulation.loop it may return fewer
+// sites than blood.particles: the rest start outside the model, waiting to enter.
 std::vector<pbd::Vec3> bloodStartPositions(const Scenario& scenario, const LvModel* model = nullptr);
 
 // Rough bytes per blood particle of a run (state, solver buffers, neighbour lists of about

@@ -182,6 +182,14 @@ void Circulation::park(pbd::Particles& particles, Index particle) {
   particles.inverseMass[particle] = 0;  // pinned: the solvers leave it where it is
 }
 
+void Circulation::startWaiting(pbd::Particles& particles, Index first, std::size_t count) {
+  m_first = first;
+  const std::size_t n = particles.size() - first;
+  m_parked.assign(n, 0);
+  for (std::size_t k = n - count; k < n; ++k) park(particles, Index(first + k));
+  m_last.count[std::size_t(FlowRegion::Parked)] = m_queue.size();
+}
+
 void Circulation::reenter(pbd::Particles& particles, Index first) {
   if (m_queue.empty()) return;
   // Blood near the inflow vessel's far end: the sites must be clear of it, and re-entering

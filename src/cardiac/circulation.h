@@ -106,6 +106,9 @@ class Circulation {
   // solver's pressures()).
   void endStep(pbd::Particles& particles, Index first, const std::vector<Real>& pressures);
 
+  // The last `count` blood particles start outside the model, queued to enter.
+  void startWaiting(pbd::Particles& particles, Index first, std::size_t count);
+
   [[nodiscard]] const FlowStep& lastStep() const { return m_last; }
   [[nodiscard]] const ValveStates& valves() const { return m_valves; }
   // Particle i (a particle id) is parked outside the model, waiting to re-enter.

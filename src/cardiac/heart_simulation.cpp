@@ -105,6 +105,13 @@ HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
     m_fluid = std::make_unique<pbd::FluidSolver>(fluid);
     const Real inverseMass = Real(1) / m_fluid->settings().fluid.particleMass;
     for (const pbd::Vec3& x : start) m_particles.add(x, inverseMass, pbd::ParticleKind::Fluid);
+    // Blood the start sites cannot hold begins in the body, waiting to enter (closed loop).
+    const std::size_t waiting =
+        scenario.blood.particles > 0 && std::size_t(scenario.blood.particles) > start.size()
+            ? std::size_t(scenario.blood.particles) - start.size()
+            : 0;
+    for (std::size_t k = 0; k < waiting; ++k) m_particles.add(start.back(), inverseMass, pbd::ParticleKind::Fluid);
+    if (waiting > 0) m_circulation->startWaiting(m_particles, m_firstBloodParticle, waiting);
     m_bloodIds.resize(m_particles.size() - m_firstBloodParticle);
     for (std::size_t k = 0; k < m_bloodIds.size(); ++k) m_bloodIds[k] = Index(k);
     reorderBlood();

@@ -152,5 +152,45 @@ TEST(BeatTracker, EdvIsTheVolumeAtSystoleOnsetAndHalfBeatsDoNotCount) {
   EXPECT_DOUBLE_EQ(tracker.beats()[0].ejectionFraction(), 0.6);
 }
 
+// Cardiac output, regurgitation and the means over complete beats after the first: three
+// beats of 0.4 s (2 steps of systole, 2 of diastole, dt 0.1 s), each ejecting 60 of 100 and
+// refilling. Mitral flow that goes back in systole is regurgitation; aortic flow that crosses
+// forward and back in systole (an open valve) is not.
+TEST(BeatTracker, CardiacOutputRegurgitationAndMeansOverCompleteBeats) {
+  BeatTracker tracker(100, 0.1);
+  const Phase phases[] = {Phase::Systole, Phase::Systole, Phase::Diastole, Phase::Diastole};
+  const double volumes[] = {70, 40, 70, 100};
+  for (int beat = 0; beat < 3; ++beat) {
+    for (int k = 0; k < 4; ++k) {
+      ValveFlows f;
+      if (phases[k] == Phase::Systole) {
+        f.aorticForward = 31, f.aorticBackward = 1;  // net 30 out per systolic step
+        f.mitralBackward = beat == 2 ? 2.0 : 0.0;    // the third beat leaks back through the mitral
+      } else {
+        f.mitralForward = 30;
+        f.aorticForward = 0.5, f.aorticBackward = 0.5;  // to and fro at the shut aortic plane
+      }
+      tracker.record(0.4 * beat + 0.1 * k, phases[k], volumes[k], f);
+    }
+  }
+  tracker.record(1.2, Phase::Systole, 70);  // the next systole closes the third beat
+  tracker.finish();
+  ASSERT_EQ(tracker.beats().size(), 3u);  // the fourth beat has no end of systole: not counted
+  for (const BeatSummary& b : tracker.beats()) {
+    EXPECT_TRUE(b.complete);
+    EXPECT_NEAR(b.duration, 0.4, 1e-12);
+    EXPECT_NEAR(b.strokeVolume(), 60, 1e-12);
+    EXPECT_NEAR(b.cardiacOutput(), 150, 1e-9);  // 60 per 0.4 s
+  }
+  EXPECT_NEAR(tracker.beats()[0].regurgitantVolume(), 0, 1e-12);
+  EXPECT_NEAR(tracker.beats()[2].regurgitantVolume(), 4, 1e-12);  // 2 per systolic step
+  const BeatMeans m = tracker.means();
+  EXPECT_EQ(m.count, 2);  // beats 2 and 3
+  EXPECT_NEAR(m.strokeVolume, 60, 1e-12);
+  EXPECT_NEAR(m.ejectionFraction, 0.6, 1e-12);
+  EXPECT_NEAR(m.regurgitantVolume, 2, 1e-12);
+  EXPECT_NEAR(m.aorticNet, 60, 1e-12);
+}
+
 }  // namespace
 }  // namespace hs::cardiac
