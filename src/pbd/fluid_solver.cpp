@@ -217,17 +217,20 @@ FluidStats measureFluid(const Particles& particles, const FluidSettings& fluid, 
   stats.fullThreshold =
       Index(std::ceil(Real(0.9) * Real(latticeNeighbourCount(fluid.supportRadius, spacing))));
   if (x.empty()) return stats;
+  for (const Index i : indices) stats.maxSpeed = std::max(stats.maxSpeed, particles.velocity[i].norm());
+  // The solver's own grid and slot lists (cell order, no per-list sort): the statistics are
+  // sums over particles and do not depend on their order but for rounding.
   NeighbourGrid grid(gridSettingsFor(threads));
   grid.build(x, fluid.supportRadius);
   NeighbourLists lists;
-  grid.buildNeighbourLists(x, fluid.supportRadius, lists);
+  grid.buildSlotNeighbourLists(fluid.supportRadius, lists);
+  const std::vector<Vec3>& slotPositions = grid.sortedPositions();
   std::vector<Index> all(x.size());
   std::iota(all.begin(), all.end(), Index(0));
   std::vector<Real> density;
-  computeDensities(x, lists, all, makeSphKernels(fluid.supportRadius), fluid, density, threads);
+  computeDensities(slotPositions, lists, all, makeSphKernels(fluid.supportRadius), fluid, density, threads);
   double sumAbs = 0, sumSigned = 0;
   for (std::size_t s = 0; s < x.size(); ++s) {
-    stats.maxSpeed = std::max(stats.maxSpeed, particles.velocity[indices[s]].norm());
     if (lists.offsets[s + 1] - lists.offsets[s] < stats.fullThreshold) continue;
     const Real c = density[s] / fluid.restDensity - Real(1);
     ++stats.fullCount;

@@ -139,6 +139,11 @@ class ParticleTetCollider {
   std::vector<std::uint8_t> m_exitFaces;
   std::vector<Triangle> m_boundary;  // boundary faces a particle may be put beyond, outward (particle ids)
   Index m_firstVertex = 0;
+  std::size_t m_vertexEnd = 0;  // one past the solid's last particle id
+  // The solid's vertices and padding of the last grid build (rebuild() skips an identical one).
+  std::vector<Vec3> m_built;
+  Real m_builtPadding = 0;
+  bool m_builtValid = false;
   TetGrid m_grid;
   std::vector<WallCorrection> m_wallCorrections;  // resolve() scratch, one slot per particle
 };
