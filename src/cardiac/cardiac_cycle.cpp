@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -59,18 +60,28 @@ void moveTowardCentre(std::vector<Vec3>& positions, std::vector<Vec3>& predicted
 namespace {
 
 // Physiological systole: each beating particle's prediction is set on its straight path from
-// its anchor toward the centre, `travel` along it (never past the centre). Unlike the
-// incremental move, x stays: the step's velocity (p - x)/dt is then the path's own velocity,
-// and the constraint corrections of one step do not pile up in the next (p is set, not moved).
-void followPath(std::vector<Vec3>& predicted, const BeatingRegion& region, const Vec3& centre) {
-  const Real travel = region.clock.travel();
+// its anchor to its end-systolic target (rest position moved `contraction` toward the centre,
+// never past it), a fraction travel/contraction of the way. Unlike the incremental move, x
+// stays: the step's velocity (p - x)/dt is then the path's own velocity, and the constraint
+// corrections of one step do not pile up in the next (p is set, not moved).
+void followPath(std::vector<Vec3>& predicted, const BeatingRegion& region, const Vec3& centre, Real contraction) {
+  const Real fraction = contraction > Real(0) ? std::min(Real(1), region.clock.travel() / contraction) : Real(0);
   for (std::size_t k = 0; k < region.particles.size(); ++k) {
-    const Index i = region.particles[k];
-    const Vec3 toCentre = centre - region.anchor[k];
+    const Vec3 toCentre = centre - region.rest[k];
     const Real distance = toCentre.norm();
-    if (distance <= Real(0)) continue;
-    predicted[i] = region.anchor[k] + (std::min(travel, distance) / distance) * toCentre;
+    const Vec3 target =
+        distance > Real(0) ? region.rest[k] + (std::min(contraction, distance) / distance) * toCentre : region.rest[k];
+    predicted[region.particles[k]] = region.anchor[k] + fraction * (target - region.anchor[k]);
   }
+}
+
+// Physiological relaxation: back from the end-systolic positions to rest along the same smooth
+// ramp, over `seconds`; `elapsed` is the time in diastole at the end of this step.
+void relaxPath(std::vector<Vec3>& predicted, const BeatingRegion& region, double elapsed, double seconds) {
+  const double s = std::clamp(elapsed / seconds, 0.0, 1.0);
+  const Real g = Real(s - std::sin(2.0 * std::numbers::pi * s) / (2.0 * std::numbers::pi));
+  for (std::size_t k = 0; k < region.particles.size(); ++k)
+    predicted[region.particles[k]] = region.endSystole[k] + g * (region.rest[k] - region.endSystole[k]);
 }
 
 BeatClockSettings clockSettings(const CycleSettings& cycle) {
@@ -88,6 +99,13 @@ BeatClockSettings clockSettings(const CycleSettings& cycle) {
   return s;
 }
 
+std::vector<Vec3> restOf(const std::vector<Index>& vertices, const LvModel& model) {
+  std::vector<Vec3> out;
+  out.reserve(vertices.size());
+  for (Index v : vertices) out.push_back(model.mesh.vertices[v]);
+  return out;
+}
+
 std::vector<Index> toParticles(const std::vector<Index>& vertices, Index first) {
   std::vector<Index> out(vertices);
   for (Index& v : out) v += first;
@@ -98,12 +116,17 @@ std::vector<Index> toParticles(const std::vector<Index>& vertices, Index first) 
 
 CardiacCycle::CardiacCycle(const CycleSettings& cycle, const LvModel& model, Index firstParticle,
                            Real dt)
-    : m_centre(model.centre) {
+    : m_centre(model.centre), m_dt(dt), m_contraction(cycle.contraction) {
   if (!cycle.enabled) return;
+  {
+    // Relaxation lasts a share of the regular diastole (the irregular pattern cuts diastoles).
+    const double period = 60.0 / double(cycle.heartRateBpm);
+    m_relaxationSeconds = double(cycle.relaxationFraction) * period * (1.0 - double(cycle.systolicFraction));
+  }
   std::vector<Index> beating = selectBeatingVertices(cycle, model);
   const BeatClockSettings main = clockSettings(cycle);
   if (cycle.pattern != BeatPattern::Inconsistent) {
-    m_regions.push_back({toParticles(beating, firstParticle), BeatClock(main, dt), {}});
+    m_regions.push_back({toParticles(beating, firstParticle), BeatClock(main, dt), {}, restOf(beating, model), {}});
     return;
   }
   // Inconsistent: the listed segments leave the main region and get their own clock, with
@@ -128,8 +151,8 @@ CardiacCycle::CardiacCycle(const CycleSettings& cycle, const LvModel& model, Ind
   const double cycleSteps = main.physiological ? double(other.period) / double(dt)
                                                : double(other.systoleSteps + other.diastoleSteps);
   offClock.delayStart(int(std::lround(cycleSteps * double(cycle.inconsistentPhaseOffset))));
-  m_regions.push_back({toParticles(mainPart, firstParticle), BeatClock(main, dt), {}});
-  m_regions.push_back({toParticles(offPart, firstParticle), offClock, {}});
+  m_regions.push_back({toParticles(mainPart, firstParticle), BeatClock(main, dt), {}, restOf(mainPart, model), {}});
+  m_regions.push_back({toParticles(offPart, firstParticle), offClock, {}, restOf(offPart, model), {}});
 }
 
 void CardiacCycle::apply(std::vector<Vec3>& positions, std::vector<Vec3>& predicted) {
@@ -138,13 +161,23 @@ void CardiacCycle::apply(std::vector<Vec3>& positions, std::vector<Vec3>& predic
       moveTowardCentre(positions, predicted, region.particles, m_centre, region.clock.advance());
       continue;
     }
-    const bool systole = region.clock.phase() == Phase::Systole;
-    if (systole && region.clock.stepsInPhase() == 0) {
+    const Phase phase = region.clock.phase();
+    const int step = region.clock.stepsInPhase();
+    if (phase == Phase::Systole && step == 0) {
       region.anchor.resize(region.particles.size());
       for (std::size_t k = 0; k < region.particles.size(); ++k) region.anchor[k] = predicted[region.particles[k]];
     }
+    if (phase == Phase::Diastole && step == 0) {
+      region.endSystole.resize(region.particles.size());
+      for (std::size_t k = 0; k < region.particles.size(); ++k) region.endSystole[k] = positions[region.particles[k]];
+    }
     region.clock.advance();
-    if (systole) followPath(predicted, region, m_centre);
+    if (phase == Phase::Systole) {
+      followPath(predicted, region, m_centre, m_contraction);
+    } else if (phase == Phase::Diastole && m_relaxationSeconds > 0 && !region.endSystole.empty()) {
+      const double elapsed = double(step + 1) * double(m_dt);
+      if (elapsed <= m_relaxationSeconds + 0.5 * double(m_dt)) relaxPath(predicted, region, elapsed, m_relaxationSeconds);
+    }
   }
 }
 

@@ -6,9 +6,14 @@
 // inconsistent (some segments beat with another rate and phase than the rest).
 // Thesis mode moves each beating vertex by BEATING_DISPLACE per systolic step (Algorithm 3);
 // the constraints push back every step, so the wall's net travel depends on its stiffness.
-// Physiological mode prescribes the path instead: during systole a beating vertex's prediction
-// is set to anchor + travel(t) * dir, anchor being where it was when the systole began and dir the
-// unit vector from there to the centre, so `contraction` is the distance it really travels.
+// Physiological mode prescribes the path instead. In systole a beating vertex goes from its
+// anchor (where it was when the systole began) to its end-systolic target, the rest position
+// moved `contraction` toward the centre, along anchor + F(s) (target - anchor) with the clock's
+// smooth ramp F: from rest it travels exactly `contraction`. In the first `relaxationFraction`
+// of a regular diastole it returns the same way to its rest position, then it is released to
+// the wall's constraints. The end-systolic shape is fixed (as the heart's is, by its
+// contractility), so a diastole cut short (irregular pattern) starts the next systole from a
+// smaller volume and the beat ejects less: the thesis expert's "not fully released" beat.
 #include <vector>
 
 #include "cardiac/beat_clock.h"
@@ -21,6 +26,8 @@ struct BeatingRegion {
   std::vector<Index> particles;  // particle ids (model vertex + first particle)
   BeatClock clock;
   std::vector<Vec3> anchor;      // physiological mode: positions when the systole began
+  std::vector<Vec3> rest;        // physiological mode: rest positions (the model's vertices)
+  std::vector<Vec3> endSystole;  // physiological mode: positions when the diastole began
 };
 
 // Model vertices chosen to beat: the union of segments, vertex ids and sphere; all myocardium
@@ -51,6 +58,9 @@ class CardiacCycle {
  private:
   std::vector<BeatingRegion> m_regions;
   Vec3 m_centre;
+  Real m_dt = 0;
+  Real m_contraction = 0;           // physiological mode (m)
+  double m_relaxationSeconds = 0;   // physiological mode: prescribed return to rest
 };
 
 }  // namespace hs::cardiac

@@ -116,6 +116,9 @@ std::vector<KeySpec> buildKeyTable() {
               "Physiological mode: share of each cycle spent in systole."),
       realKey("cycle.contraction", HS_FIELD(cycle.contraction), ge(0), m,
               "Physiological mode: total inward displacement of a beating vertex per systole."),
+      realKey("cycle.relaxation_fraction", HS_FIELD(cycle.relaxationFraction), between(0, 1), "",
+              "Physiological mode: share of a regular diastole the wall takes to return to rest "
+              "(0 = released to its constraints at once)."),
       intListKey("cycle.segments", HS_FIELD(cycle.segments), 1, 17, true,
                  "AHA segments (1..17) that beat; with vertices and sphere empty, all myocardium beats."),
       intListKey("cycle.vertices", HS_FIELD(cycle.vertices), 0, std::numeric_limits<std::int64_t>::max(),

@@ -205,6 +205,8 @@ std::vector<KeyCase> everyKeyCase() {
       {"cycle.systolic_fraction", "0.4",
        [](const Scenario& s) { return s.cycle.systolicFraction == Real(0.4); }},
       {"cycle.contraction", "0.2", [](const Scenario& s) { return s.cycle.contraction == Real(0.2); }},
+      {"cycle.relaxation_fraction", "0.25",
+       [](const Scenario& s) { return s.cycle.relaxationFraction == Real(0.25); }},
       {"cycle.segments", "[1,2,3]",
        [](const Scenario& s) {
          return s.cycle.segments == std::vector<int>{1, 2, 3};
