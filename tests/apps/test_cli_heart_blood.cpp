@@ -62,6 +62,26 @@ INSTANTIATE_TEST_SUITE_P(CliHeartBlood, PaperScenario,
                            return n;
                          });
 
+// The physiological scenarios start: real size (a cavity of about 128 mL), 3,000 particles,
+// the first systole under way after 0.2 s with the aortic valve open and the mitral shut.
+TEST(CliHeartBlood, PhysiologicalScenariosStartAtRealSize) {
+  for (const std::string name : {"normal", "irregular", "inconsistent"}) {
+    SCOPED_TRACE(name);
+    const auto dir = scratchDir("physiological_" + name);
+    const CliResult r = runHeartsim("run " + name + " --duration 0.2 --threads 2 --json --out out", dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.at("blood").at("particles").get<int>(), 3000);
+    EXPECT_EQ(j.at("blood").at("lost").get<int>(), 0);
+    EXPECT_NEAR(j.at("cavity").at("volume_rest_m3").get<double>() * 1e6, 128, 5);
+    std::istringstream csv(readFile(dir / "out" / "metrics.csv"));
+    std::string header, row, last;
+    std::getline(csv, header);
+    while (std::getline(csv, row)) last = row;
+    EXPECT_NE(last.find(",systole,"), std::string::npos) << last;
+  }
+}
+
 TEST(CliHeartBlood, VesselStartWithoutAHeartIsAOneLineError) {
   const auto dir = scratchDir("vessel_no_heart");
   const CliResult r =
