@@ -137,6 +137,11 @@ io::VtuFrame bloodFrame(const cardiac::HeartSimulation& sim) {
   frame.points.assign(sim.particles().position.begin() + first, sim.particles().position.end());
   std::vector<pbd::Vec3> velocity(sim.particles().velocity.begin() + first, sim.particles().velocity.end());
   frame.vectorArrays = {{"velocity", velocity}};
+  // 0: parked outside the model by the closed loop, waiting to re-enter (hide with a threshold).
+  std::vector<int> active;
+  for (std::size_t i = sim.firstBloodParticle(); i < sim.particles().size(); ++i)
+    active.push_back(sim.bloodActive(pbd::Index(i)) ? 1 : 0);
+  frame.intArrays = {{"active", active}};
   return frame;
 }
 

@@ -102,7 +102,14 @@ viz::Rgb toRgb(const Vec3f& c) {
 
 double defaultSpeedScale(const cardiac::Scenario& scenario) {
   const double g = std::max(double(scenario.simulation.gravity.norm()), 1e-6);
-  const double h = std::max(double(scenario.blood.blockMax.y() - scenario.blood.blockMin.y()), 1e-6);
+  // The height blood can fall through: the heart's (apex to the vessels' far ends), else the
+  // start block's.
+  const auto& model = scenario.geometry;
+  const double heartHeight = double(model.endoLongAxis + model.wallThickness + model.baseThickness +
+                                    std::max(model.inflowVesselLength, model.outflowVesselLength));
+  const double h = std::max(scenario.heart ? heartHeight
+                                           : double(scenario.blood.blockMax.y() - scenario.blood.blockMin.y()),
+                            1e-6);
   const double v = std::sqrt(2 * g * h);
   const double decade = std::pow(10.0, std::floor(std::log10(v)));
   for (double m : {1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0})
@@ -150,6 +157,7 @@ Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& option
     const auto& p = sim.particles();
     scene.particles.radius = float(s.blood.radius);
     for (std::size_t i = sim.firstBloodParticle(); i < p.size(); ++i) {
+      if (!sim.bloodActive(pbd::Index(i))) continue;  // parked outside the model (circulation.h)
       scene.particles.centres.push_back(toVec3f(p.position[i]));
       scene.particles.colours.push_back(speedColour(double(p.velocity[i].norm()) / speedMax));
     }

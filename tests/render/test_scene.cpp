@@ -86,11 +86,37 @@ TEST(Scene, SpeedColoursRunFromBlueToYellow) {
 
 TEST(Scene, DefaultSpeedScaleIsTheRoundedFreeFallSpeedOfTheBlock) {
   hs::cardiac::Scenario scenario;
+  scenario.heart = false;
   scenario.blood.blockMin = hs::pbd::Vec3(0, 0, 0);
   scenario.blood.blockMax = hs::pbd::Vec3(0.05f, 0.1143f, 0.05f);  // sqrt(2 g H) = 1.50 m/s
   EXPECT_DOUBLE_EQ(hs::render::defaultSpeedScale(scenario), 1.5);
   scenario.blood.blockMax = hs::pbd::Vec3(0.05f, 0.1f, 0.05f);  // 1.40 m/s
   EXPECT_DOUBLE_EQ(hs::render::defaultSpeedScale(scenario), 1.5);
+}
+
+// With a heart the blood can fall through the whole model: apex to the vessels' far ends.
+TEST(Scene, DefaultSpeedScaleWithAHeartIsTheFreeFallSpeedOfTheModel) {
+  hs::cardiac::Scenario scenario;
+  auto& g = scenario.geometry;
+  g.endoLongAxis = 0.06f, g.wallThickness = 0.01f, g.baseThickness = 0.004f;
+  g.inflowVesselLength = g.outflowVesselLength = 0.03f;  // H = 0.104 m: sqrt(2 g H) = 1.43 m/s
+  EXPECT_DOUBLE_EQ(hs::render::defaultSpeedScale(scenario), 1.5);
+}
+
+// Blood the closed loop has parked outside the model (waiting to re-enter) is not drawn.
+TEST(Scene, ParkedBloodIsNotDrawn) {
+  hs::cardiac::Scenario scenario;
+  scenario.cycle.enabled = false;
+  scenario.blood.enabled = true;
+  scenario.blood.start = hs::cardiac::BloodSettings::Start::Vessel;
+  scenario.blood.particles = 9000;  // more than the inflow vessel and the cavity hold
+  const hs::cardiac::HeartSimulation sim(scenario, 1);
+  std::size_t active = 0;
+  for (std::size_t i = sim.firstBloodParticle(); i < sim.particles().size(); ++i)
+    active += sim.bloodActive(hs::pbd::Index(i));
+  ASSERT_LT(active, 9000u);
+  ASSERT_GT(active, 0u);
+  EXPECT_EQ(hs::render::buildScene(sim, {}).particles.centres.size(), active);
 }
 
 TEST(Scene, TheCutIsMadeOnlyInViewsThatLookAtIt) {
