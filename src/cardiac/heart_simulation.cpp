@@ -98,8 +98,10 @@ HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
       // constraints, in step()): blood squeezed by the beating wall must not be pushed
       // through it by its own pressure.
       fluid.afterIteration = [this](std::vector<pbd::Vec3>& x, std::span<const Index> ids, const pbd::Particles& p) {
-        m_wallContact->resolvePoints(p, x, ids, wallContactSettings());
+        // Valves first, the wall last: the closed-valve disc has the lumen's radius, and the
+        // wall's faceted lumen lies a little inside it, so the wall has the final word.
         m_circulation->gatePoints(p, x, ids);
+        m_wallContact->resolvePoints(p, x, ids, wallContactSettings());
       };
     }
     m_fluid = std::make_unique<pbd::FluidSolver>(fluid);
@@ -140,8 +142,8 @@ void HeartSimulation::step() {
   };
   if (m_wallContact) {
     hooks.afterProjection = [this](pbd::Particles& p) {
-      m_wallContact->resolve(p, m_firstBloodParticle, Index(p.size()), wallContactSettings());
       m_circulation->gateParticles(p, m_firstBloodParticle);
+      m_wallContact->resolve(p, m_firstBloodParticle, Index(p.size()), wallContactSettings());
     };
   }
   if (m_fluid) hooks.postProcessVelocities = [this](pbd::Particles& p) { m_fluid->postProcessVelocities(p); };

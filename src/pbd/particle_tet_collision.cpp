@@ -2,6 +2,7 @@
 #include "pbd/particle_tet_collision.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -17,6 +18,9 @@ constexpr std::ptrdiff_t kParallelThreshold = 256;
 // Rounds of "out through the nearest boundary face" for a particle a push left inside
 // another tet; two faces of a corner need one each, and a few more cover three-face corners.
 constexpr int kSettleRounds = 4;
+
+// Samples along a fast particle's path in the tunnelling test (a path of 32 half radii).
+constexpr int kMaxPathSamples = 64;
 
 std::vector<Tet> shifted(std::vector<Tet> tets, Index offset) {
   for (Tet& t : tets)
@@ -130,6 +134,24 @@ bool ParticleTetCollider::pushOut(const std::vector<Vec3>& p, const std::vector<
                                   const Vec3& previous, const ParticleTetSettings& settings,
                                   WallContact& contact) const {
   bool changed = false;
+  // Tunnelling: a particle that moved more than its radius this step may have crossed a wall
+  // thinner than its step and end outside every tet. Its path is sampled at half-radius
+  // steps; the first sample inside a tet becomes the point the push-out below starts from, so
+  // the particle goes back along its ray to its radius before the face it entered through.
+  // Only for a particle that started outside the solid (one the wall moved onto is the
+  // passes' business, in the tet's frame).
+  const Real moved2 = (x - previous).squaredNorm();
+  if (moved2 > settings.radius * settings.radius && !insideAnyTet(p, x) && !insideAnyTet(p, previous)) {
+    const Real length = std::sqrt(moved2);
+    const int samples = std::min(kMaxPathSamples, int(std::ceil(length / (Real(0.5) * settings.radius))));
+    for (int j = 1; j < samples; ++j) {
+      const Vec3 point = previous + (Real(j) / Real(samples)) * (x - previous);
+      if (insideAnyTet(p, point)) {
+        x = point;
+        break;
+      }
+    }
+  }
   // While walking back along the ray through interior faces, the entry point of the last tet
   // and the ray's unit direction: the particle must end `radius` beyond the entry into the
   // solid, not into one of its inner tets.
@@ -183,6 +205,8 @@ bool ParticleTetCollider::pushOut(const std::vector<Vec3>& p, const std::vector<
   if (changed) {
     for (int round = 0; round < kSettleRounds && insideAnyTet(p, x); ++round)
       x = nearestBoundaryExit(p, x, settings.radius, contact);
+    // Last resort: back where the step started, if the solid does not hold that point.
+    if (insideAnyTet(p, x) && !insideAnyTet(p, previous)) x = previous;
   }
   return changed;
 }

@@ -414,3 +414,44 @@ TEST(ParticleTetTwoWay, APinnedVertexDoesNotMove) {
 
 }  // namespace
 }  // namespace hs::pbd
+
+namespace hs::pbd {
+namespace {
+
+// Tunnelling: a wall thinner than a particle's step (a 4 x 4 x 1 slab of 0.05 m cubes, 0.05 m
+// thick) stops fast particles that cross it within one step, though they end outside every
+// tet: each ends on the side it came from, outside the slab. Without the path samples all 500
+// ended beyond it.
+TEST(ParticleTetCollision, FastParticlesDoNotTunnelThroughAThinWall) {
+  TetMesh slab = testing::makeBoxMesh(4, Real(0.05));
+  // Keep the bottom layer of cubes only: z in [0, 0.05].
+  std::vector<Tet> thin;
+  for (const Tet& t : slab.tets) {
+    bool low = true;
+    for (Index v : t) low = low && slab.vertices[v].z() <= Real(0.05) + Real(1e-6);
+    if (low) thin.push_back(t);
+  }
+  ASSERT_EQ(thin.size(), 4u * 4u * 6u);
+  Particles particles;
+  for (const Vec3& v : slab.vertices) particles.add(v, 0, ParticleKind::Tissue);
+  const Index first = Index(particles.size());
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> across(0.03, 0.17), below(-0.2, -0.03), above(0.08, 0.25);
+  for (int k = 0; k < 500; ++k) {
+    const Index i = particles.add(Vec3(Real(across(rng)), Real(across(rng)), Real(below(rng))), 1, ParticleKind::Fluid);
+    particles.predicted[i] = Vec3(Real(across(rng)), Real(across(rng)), Real(above(rng)));  // through the slab
+  }
+  ParticleTetCollider collider(thin, 0);
+  ParticleTetSettings s;
+  s.radius = Real(0.02);
+  collider.resolve(particles, first, Index(particles.size()), s);
+  for (std::size_t i = first; i < particles.size(); ++i) {
+    const Vec3& p = particles.predicted[i];
+    // Eq. 4.20 moves it back along its ray: radius |cos| from the face, on its own side.
+    EXPECT_LT(p.z(), Real(0)) << "particle " << i << " crossed the slab: z = " << p.z();
+    for (const Tet& t : thin) ASSERT_FALSE(isPointInTet(tetPoints(particles.predicted, t), p, Real(0))) << i;
+  }
+}
+
+}  // namespace
+}  // namespace hs::pbd
