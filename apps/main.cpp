@@ -15,8 +15,8 @@
 namespace {
 
 // Options several subcommands share, with one wording and one range.
-void addThreadsOption(CLI::App* command, int& threads) {
-  command->add_option("--threads", threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+void addThreadsOption(CLI::App* command, int& threads, const char* help = "Worker threads (default: all cores)") {
+  command->add_option("--threads", threads, help)->check(CLI::Range(1, 1024));
 }
 
 void addSetOption(CLI::App* command, std::vector<std::string>& overrides, const char* example = "cycle.beats=2") {
@@ -66,7 +66,8 @@ int main(int argc, char** argv) {
   viewApp->add_option("--size", view.size, "Window size, WIDTHxHEIGHT pixels")->capture_default_str();
   viewApp->add_option("--frames", view.frames, "Quit after N frames (scripted use; 0 = until closed)");
   viewApp->add_option("--screenshot", view.screenshot, "Save the last frame as this PNG file");
-  addThreadsOption(viewApp, view.threads);
+  addThreadsOption(viewApp, view.threads,
+                   "Simulation threads (default: all cores but one, which the drawing needs)");
   addSetOption(viewApp, view.overrides);
 
   BenchOptions bench;

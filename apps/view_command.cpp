@@ -42,7 +42,10 @@ int viewCommand(const ViewOptions& options) {
     viewer.builtinName = options.scenario;
   viewer.frames = options.frames;
   viewer.screenshot = options.screenshot;
-  viewer.threads = options.threads > 0 ? options.threads : omp_get_num_procs();
+  // The simulation runs in its own thread beside the drawing: by default it leaves one core to
+  // the window (on a software renderer the drawing needs it, and an OpenMP team sharing its
+  // cores with the renderer's threads waits at every barrier).
+  viewer.threads = options.threads > 0 ? options.threads : std::max(1, omp_get_num_procs() - 1);
   try {
     viewer::runViewer(viewer);
   } catch (const viewer::DisplayError& e) {

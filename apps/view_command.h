@@ -13,7 +13,7 @@ struct ViewOptions {
   std::string size = "1280x800";       // WxH window pixels
   int frames = 0;                      // > 0: quit after N frames
   std::string screenshot;              // save the last frame as PNG
-  int threads = 0;                     // 0 = all cores
+  int threads = 0;                     // 0 = all cores but one (left to the drawing)
 };
 
 // Exit codes: 0 closed; 2 bad option or scenario (one line); 1 no display (one line saying

@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -176,10 +177,24 @@ uniform mat4 uView, uProjection;
 uniform float uRadius;
 out vec3 vViewPos, vCentre, vColour;
 void main() {
-  // A camera-facing square around the sphere, large enough to hold its perspective outline.
+  // A camera-facing rectangle at the centre's depth that just holds the sphere's perspective
+  // outline, so few fragments miss the sphere (each one that does still costs a ray test).
+  // Screen x is x / -z: its extremes over the sphere lie on the planes x = k (-z) through the
+  // eye tangent to it, i.e. the tangents from the origin to the circle of radius r around
+  // (c.x, -c.z) in the xz plane; the same for y. With the eye in or at the sphere a generous
+  // square stands in.
   vec2 corner = vec2(gl_VertexID & 1, (gl_VertexID >> 1) & 1) * 2.0 - 1.0;
   vec3 c = (uView * vec4(aCentre, 1.0)).xyz;
-  vec3 p = c + vec3(corner * uRadius * 1.5, 0.0);
+  float depth = -c.z;
+  vec2 offset = corner * uRadius * 1.5;
+  if (depth > uRadius * 1.01) {
+    for (int a = 0; a < 2; ++a) {
+      float spread = asin(uRadius / length(vec2(c[a], depth)));
+      float angle = clamp(atan(c[a], depth) + corner[a] * spread, -1.5, 1.5);
+      offset[a] = depth * tan(angle) - c[a];
+    }
+  }
+  vec3 p = c + vec3(offset, 0.0);
   vViewPos = p;
   vCentre = c;
   vColour = aColour;
@@ -320,7 +335,18 @@ void setClip(GLuint program, const ClipPlane& clip, bool on, const Mat4f& view) 
 }  // namespace
 
 void Renderer::draw(const Scene& scene, const Camera& camera, int width, int height) {
+  draw(scene, camera, width, height, 0, width);
+}
+
+void Renderer::draw(const Scene& scene, const Camera& camera, int width, int height, int x0, int x1) {
   Gl& g = *m_gl;
+  x0 = std::clamp(x0, 0, width);
+  x1 = std::clamp(x1, x0, width);
+  const bool strip = x0 > 0 || x1 < width;
+  if (strip) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x0, 0, x1 - x0, height);
+  }
   const Mat4f view = camera.viewMatrix();
   const Mat4f projection = camera.projectionMatrix(float(width) / float(height));
   glViewport(0, 0, width, height);
@@ -409,6 +435,7 @@ void Renderer::draw(const Scene& scene, const Camera& camera, int width, int hei
   }
   glBindVertexArray(0);
   glUseProgram(0);
+  if (strip) glDisable(GL_SCISSOR_TEST);
 }
 
 }  // namespace hs::render

@@ -114,6 +114,10 @@ class Renderer {
   Renderer& operator=(const Renderer&) = delete;
 
   void draw(const Scene& scene, const Camera& camera, int width, int height);
+  // Only the pixels x in [x0, x1) are drawn (the rest is left as it was), with the projection
+  // of the whole width x height image: the viewer skips what its opaque panels cover, which
+  // on a software renderer is time saved.
+  void draw(const Scene& scene, const Camera& camera, int width, int height, int x0, int x1);
 
  private:
   struct Gl;

@@ -65,17 +65,19 @@ void simulationSection(ViewerControls& c, const ViewerStatus& s) {
   tooltip("Simulated seconds per second of wall-clock time (1x = real time)");
 }
 
-void scenarioSection(ViewerControls& c, const ViewerStatus& s, const std::vector<std::string>& scenarios) {
+void scenarioSection(ViewerControls& c, const ViewerStatus& s, const std::vector<ScenarioChoice>& scenarios) {
   const char* preview = c.scenarioIndex >= 0 && c.scenarioIndex < int(scenarios.size())
-                            ? scenarios[std::size_t(c.scenarioIndex)].c_str()
+                            ? scenarios[std::size_t(c.scenarioIndex)].name.c_str()
                             : s.scenarioName.c_str();
   if (ImGui::BeginCombo("scenario", preview)) {
     for (int i = 0; i < int(scenarios.size()); ++i) {
+      const ScenarioChoice& choice = scenarios[std::size_t(i)];
       const bool selected = i == c.scenarioIndex;
-      if (ImGui::Selectable(scenarios[std::size_t(i)].c_str(), selected) && !selected) {
+      if (ImGui::Selectable(choice.name.c_str(), selected) && !selected) {
         c.scenarioIndex = i;
         c.scenarioChanged = true;
       }
+      if (!choice.description.empty()) tooltip(choice.description.c_str());
     }
     ImGui::EndCombo();
   }
@@ -138,7 +140,7 @@ std::string realTimeWarning(const ViewerStatus& status) {
 }
 
 void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
-                      const std::vector<std::string>& scenarios, int windowHeight) {
+                      const std::vector<ScenarioChoice>& scenarios, int windowHeight) {
   ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(kPanelWidth, float(windowHeight)), ImGuiCond_Always);
   ImGui::Begin("heartsim", nullptr,
@@ -151,6 +153,11 @@ void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
   ImGui::Spacing();
   sectionTitle("Scenario");
   scenarioSection(controls, status, scenarios);
+  if (status.hasBlood) {
+    ImGui::Spacing();
+    sectionTitle("Blood");
+    drawBloodSection(controls.blood, status.hasHeart);
+  }
   if (status.hasHeart) {
     ImGui::Spacing();
     sectionTitle("Beating region");
@@ -159,9 +166,27 @@ void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
   ImGui::Spacing();
   sectionTitle("Display");
   displaySection(controls, status);
-  if (status.hasHeart) {
+  if (!status.message.empty()) {
     ImGui::Spacing();
-    sectionTitle("Wall colours");
+    ImGui::Separator();
+    ImGui::TextWrapped("%s", status.message.c_str());
+  }
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+void drawColourKey(const ViewerStatus& status, float leftEdge, int windowHeight) {
+  if (!status.hasHeart && !status.hasBlood) return;
+  constexpr float kMargin = 10, kWidth = 260;
+  ImGui::SetNextWindowPos(ImVec2(leftEdge + kMargin, float(windowHeight) - kMargin), ImGuiCond_Always,
+                          ImVec2(0, 1));
+  // A fixed width: the speed bar fills the window, which must not size itself after it.
+  ImGui::SetNextWindowSize(ImVec2(kWidth, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowBgAlpha(0.75f);
+  ImGui::Begin("colour key", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+  if (status.hasHeart) {
     ImGui::TextColored(ImVec4(0.85f, 0.3f, 0.32f, 1), "red");
     ImGui::SameLine();
     ImGui::TextUnformatted("myocardium, dark red: cut face");
@@ -172,21 +197,15 @@ void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
     ImGui::TextUnformatted("light: base plate and vessels");
   }
   if (status.hasBlood) {
-    ImGui::Spacing();
+    if (status.hasHeart) ImGui::Spacing();
     speedLegend(status.speedMax);
   }
-  if (!status.message.empty()) {
-    ImGui::Spacing();
-    ImGui::Separator();
-    ImGui::TextWrapped("%s", status.message.c_str());
-  }
-  ImGui::PopItemWidth();
   ImGui::End();
 }
 
-void drawStatusOverlay(const ViewerStatus& status, int windowWidth) {
+void drawStatusOverlay(const ViewerStatus& status, float rightEdge) {
   constexpr float kMargin = 10;
-  ImGui::SetNextWindowPos(ImVec2(float(windowWidth) - kMargin, kMargin), ImGuiCond_Always, ImVec2(1, 0));
+  ImGui::SetNextWindowPos(ImVec2(rightEdge - kMargin, kMargin), ImGuiCond_Always, ImVec2(1, 0));
   ImGui::SetNextWindowBgAlpha(0.75f);
   ImGui::Begin("status", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
@@ -195,12 +214,12 @@ void drawStatusOverlay(const ViewerStatus& status, int windowWidth) {
   ImGui::Text("%s", status.scenarioName.c_str());
   ImGui::Text("t = %.3f s", status.time);
   if (*status.phase) ImGui::Text("phase: %s", status.phase);
-  // The thesis-scale models are metres across: their volumes read better in m^3.
-  if (status.cavityMl >= 1e4)
-    ImGui::Text("cavity volume: %.3g m^3 (thesis scale)", status.cavityMl * 1e-6);
-  else if (status.cavityMl >= 0)
-    ImGui::Text("cavity volume: %.1f mL", status.cavityMl);
-  ImGui::Text("frame: %.1f ms", status.frameMs);
+  // The thesis-scale models are metres across: their volumes read better in m^3 (pump_readout.h).
+  if (status.cavity >= 0 && status.pump.scale.thesis)
+    ImGui::Text("cavity volume: %.3g m^3 (thesis scale)", status.cavity);
+  else if (status.cavity >= 0)
+    ImGui::Text("cavity volume: %.1f mL", status.cavity * status.pump.scale.volume);
+  ImGui::Text("frame: %.1f ms (%.0f fps)", status.frameMs, status.frameMs > 0 ? 1000 / status.frameMs : 0.0);
   if (const std::string warning = realTimeWarning(status); !warning.empty())
     ImGui::TextColored(ImVec4(0.95f, 0.55f, 0.15f, 1), "%s", warning.c_str());
   ImGui::End();

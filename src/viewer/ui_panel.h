@@ -1,13 +1,16 @@
 #pragma once
-// The viewer's Dear ImGui windows: the control panel (left), the status corner (top right)
-// and the help window. They only read a ViewerStatus and write requests into ViewerControls;
-// ViewerApp acts on the requests between frames, so nothing here touches the simulation.
+// The viewer's Dear ImGui windows: the control panel (left), the status corner (top right of
+// the scene), the colour key (bottom left of the scene) and the help window. They only read a
+// ViewerStatus and write requests into ViewerControls; ViewerApp acts on the requests between
+// frames, so nothing here touches the simulation.
 // Needs an ImGui frame in progress (between ImGui::NewFrame and ImGui::Render).
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "render/renderer.h"
+#include "viewer/blood_controls.h"
+#include "viewer/pump_panel.h"
 #include "viewer/region_panel.h"
 
 namespace hs::viewer {
@@ -24,6 +27,8 @@ struct ViewerControls {
   float wallOpacity = 1;
   bool showHelp = false;
   RegionControls region;  // the beating region: bull's-eye, brush, Apply
+  BloodControls blood;    // viscosity, particles, start, coupling, valves (restart)
+  PumpControls pump;      // the right panel's plots
 
   bool stepRequested = false;
   bool resetRequested = false;
@@ -40,7 +45,7 @@ struct ViewerStatus {
   double time = 0;            // s, simulated
   double dt = 0;              // s per step
   const char* phase = "";     // "systole", "diastole", "rest" or "" (no beating heart)
-  double cavityMl = -1;       // < 0: no heart
+  double cavity = -1;         // m^3; < 0: no heart
   double frameMs = 0;         // wall time per frame, smoothed
   double realTimeFactor = 1;  // simulated / wall seconds achieved, smoothed
   bool behind = false;        // the step budget could not keep up with the requested speed
@@ -50,14 +55,24 @@ struct ViewerStatus {
   float clipMin = -1, clipMax = 1;  // range of the clipping plane's slider (m)
   std::string message;              // last event: "saved viewer.png", "simulation became invalid ..."
   RegionStatus region;
+  PumpStatus pump;  // the right panel (with a heart)
+};
+
+// A built-in scenario for the preset list; the description is its tooltip.
+struct ScenarioChoice {
+  std::string name, description;
 };
 
 // Width of the control panel in pixels (the camera frames the rest of the window).
 inline constexpr float kPanelWidth = 300;
 
 void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
-                      const std::vector<std::string>& scenarios, int windowHeight);
-void drawStatusOverlay(const ViewerStatus& status, int windowWidth);
+                      const std::vector<ScenarioChoice>& scenarios, int windowHeight);
+// rightEdge: the x (pixels) the corner's right side keeps to (the pump panel's left side).
+void drawStatusOverlay(const ViewerStatus& status, float rightEdge);
+// The colour key (the wall's colours, the blood's speed scale) at the bottom left of the
+// scene; leftEdge: the control panel's right side.
+void drawColourKey(const ViewerStatus& status, float leftEdge, int windowHeight);
 void drawHelpWindow(bool& open, int windowWidth, int windowHeight);
 
 // "running at 0.4x real time" when behind, else "".

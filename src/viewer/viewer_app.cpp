@@ -20,43 +20,54 @@
 #include "render/renderer.h"
 #include "render/scene.h"
 #include "viewer/camera_controller.h"
+#include "viewer/plot_history.h"
 #include "viewer/region_editor.h"
+#include "viewer/simulation_runner.h"
 #include "viewer/ui_panel.h"
 #include "viewer/viewer_window.h"
 
 namespace hs::viewer {
 
-long Pacing::owe(double wallSeconds, double speed, double dt) {
-  debt += std::max(wallSeconds, 0.0) * std::max(speed, 0.0);
-  return static_cast<long>(std::floor(debt / dt + 1e-9));
-}
-
-bool Pacing::settle(long owed, long taken, double dt) {
-  debt -= double(taken) * dt;
-  if (taken >= owed) return false;
-  debt = std::min(debt, dt);  // what could not be done is dropped, not carried
-  return true;
-}
-
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// The built-in presets with their descriptions (each a scenario file compiled in).
+std::vector<ScenarioChoice> scenarioChoices() {
+  std::vector<ScenarioChoice> choices;
+  for (const std::string& name : io::builtinScenarioNames()) {
+    std::string description;
+    try {
+      description = io::loadScenario(name).description;
+    } catch (const std::exception& e) {
+      description = std::string("cannot be loaded: ") + e.what();
+    }
+    choices.push_back({name, description});
+  }
+  return choices;
+}
+
+// A brush dab to apply to the simulation's wall at the next access.
+struct BrushDab {
+  BrushQuery query;
+  bool erase = false;
+};
 
 class ViewerApp {
  public:
   explicit ViewerApp(const ViewerOptions& options)
       : m_options(options),
         m_baseScenario(options.scenario),
-        m_scenarios(io::builtinScenarioNames()),
-        m_window(options.width, options.height) {
+        m_scenarios(scenarioChoices()),
+        m_window(options.width, options.height, !options.screenshot.empty()),
+        m_runner(options.threads) {
     glfwSetWindowUserPointer(m_window.handle, this);
     glfwSetScrollCallback(m_window.handle, [](GLFWwindow* w, double, double dy) {
       static_cast<ViewerApp*>(glfwGetWindowUserPointer(w))->m_scroll += dy;
     });
     m_imgui = std::make_unique<ImGuiSession>(m_window.handle);
     m_renderer = std::make_unique<render::Renderer>();
-    const auto found = std::find(m_scenarios.begin(), m_scenarios.end(), options.builtinName);
-    m_controls.scenarioIndex = found == m_scenarios.end() ? -1 : int(found - m_scenarios.begin());
+    m_controls.scenarioIndex = scenarioIndex(options.builtinName);
     startScenario(m_baseScenario);
   }
 
@@ -73,24 +84,35 @@ class ViewerApp {
 
  private:
   ViewerOptions m_options;
-  cardiac::Scenario m_baseScenario;  // as loaded, before the panel's cycle settings
-  std::vector<std::string> m_scenarios;
+  cardiac::Scenario m_baseScenario;  // as loaded, before the panel's cycle and blood settings
+  std::vector<ScenarioChoice> m_scenarios;
   Window m_window;
   std::unique_ptr<ImGuiSession> m_imgui;
   std::unique_ptr<render::Renderer> m_renderer;
-  std::unique_ptr<cardiac::HeartSimulation> m_sim;
   std::unique_ptr<CameraController> m_camera;
   ViewerControls m_controls;
   ViewerStatus m_status;
   RegionEditor m_region;
-  Pacing m_pacing;
+  PlotHistory m_history;
+  std::vector<BrushDab> m_dabs;  // painted this frame, applied at the frame's access
+  bool m_sentPlaying = true;     // what the simulation thread was last told
+  bool m_started = false;        // a simulation is running (a failed restart keeps it)
+  BloodControls m_runningBlood;  // the blood settings of the simulation running
   Clock::time_point m_lastFrame;
   double m_scroll = 0;
   int m_dragButton = -1;  // GLFW mouse button of a drag that began over the scene
   double m_lastX = 0, m_lastY = 0;
   int m_screenshotCount = 0;
+  SimulationRunner m_runner;  // last, so destroyed first: its thread stops before the app goes
 
-  // The scenario with the panel's cycle settings applied.
+  // The position of a built-in scenario in the preset list; -1 for any other name.
+  int scenarioIndex(const std::string& name) const {
+    const auto found = std::find_if(m_scenarios.begin(), m_scenarios.end(),
+                                    [&](const ScenarioChoice& c) { return c.name == name; });
+    return found == m_scenarios.end() ? -1 : int(found - m_scenarios.begin());
+  }
+
+  // The scenario with the panel's cycle and blood settings applied.
   cardiac::Scenario configured() const {
     cardiac::Scenario s = m_baseScenario;
     s.cycle.enabled = m_controls.cycleEnabled;
@@ -99,20 +121,38 @@ class ViewerApp {
       s.cycle.heartRateBpm = cardiac::Real(m_controls.heartRateBpm);
     }
     m_region.configure(s);
+    if (s.blood.enabled) applyBloodControls(m_controls.blood, s);
     return s;
   }
 
-  // A new scenario: controls from its settings, the camera framing it.
+  // A new scenario: controls from its settings, the camera framing it. When it cannot start,
+  // the one running stays, with its controls.
   void startScenario(const cardiac::Scenario& scenario) {
+    const cardiac::Scenario previousBase = m_baseScenario;
+    const ViewerControls previousControls = m_controls;
+    const RegionEditor previousRegion = m_region;
     m_baseScenario = scenario;
     m_controls.cycleEnabled = scenario.cycle.enabled;
     m_controls.heartRateBpm = float(scenario.cycle.heartRateBpm);
+    m_controls.blood = bloodControlsFrom(scenario, 0);
     m_region = RegionEditor();  // a region applied to the last scenario is not this one's
-    restart();
-    if (!m_sim) return;
-    m_region.startScenario(*m_sim, m_controls.region);
-    m_controls.clip = m_sim->hasHeart();
-    const render::Box bounds = render::sceneBounds(*m_sim);
+    if (!restart()) {
+      m_baseScenario = previousBase, m_controls = previousControls, m_region = previousRegion;
+      // The list shows the scenario that still runs (or its name, when it came from a file).
+      m_controls.scenarioIndex = scenarioIndex(m_status.scenarioName);
+      return;
+    }
+    render::Box bounds;
+    m_runner.access([&](SimulationState& s) {
+      const cardiac::HeartSimulation& sim = *s.sim;
+      m_region.startScenario(sim, m_controls.region);
+      bounds = render::sceneBounds(sim);
+      m_status.hasHeart = sim.hasHeart();
+      m_status.pump.scale = volumeScaleFor(sim.hasHeart() ? double(sim.cavityVolume()) : 0.0);
+      const int blood = sim.hasBlood() ? int(sim.particles().size() - sim.firstBloodParticle()) : 0;
+      m_controls.blood = bloodControlsFrom(scenario, blood);
+    });
+    m_controls.clip = m_status.hasHeart;
     m_status.clipMin = bounds.min.z();
     m_status.clipMax = bounds.max.z();
     m_controls.clipZ = std::clamp(0.0f, m_status.clipMin, m_status.clipMax);
@@ -120,26 +160,35 @@ class ViewerApp {
     resetCamera(render::View::Front);
   }
 
-  void restart() {
+  // From t = 0 with the configured scenario; false (and a message) when it is rejected and a
+  // simulation already runs, which then goes on.
+  bool restart() {
     try {
-      m_sim = std::make_unique<cardiac::HeartSimulation>(configured(), m_options.threads);
-      m_status.message.clear();
+      m_runner.start(configured());
     } catch (const std::invalid_argument& e) {
-      if (!m_sim) throw;
+      if (!m_started) throw;
       m_status.message = std::string("cannot restart: ") + e.what();
+      return false;
     }
-    m_pacing = {};
+    m_started = true;
+    m_runningBlood = m_controls.blood;
+    m_status.message.clear();
+    m_history.clear();
+    return true;
   }
 
-  // Frames the bounds in the part of the window right of the panel.
+  // The pump panel's width, when it is shown (with a heart).
+  float rightPanelWidth() const { return m_status.hasHeart ? kPumpPanelWidth : 0; }
+
+  // Frames the bounds in the part of the window between the panels.
   void resetCamera(render::View view) {
     int w = 0, h = 0;
     glfwGetWindowSize(m_window.handle, &w, &h);
     h = std::max(h, 1);
-    const float free = std::max(float(w) - kPanelWidth, float(w) * 0.3f);
+    const float free = std::max(float(w) - kPanelWidth - rightPanelWidth(), float(w) * 0.3f);
     m_camera->setAspect(free / float(h));
     m_camera->setView(view);
-    m_camera->pan((float(w) - free) / 2, 0, h);
+    m_camera->pan((kPanelWidth - rightPanelWidth()) / 2, 0, h);
   }
 
   void handleInput() {
@@ -193,28 +242,32 @@ class ViewerApp {
     ViewerControls& c = m_controls;
     const bool regionApplied = m_region.handleRequests(c.region);
     if (c.scenarioChanged && c.scenarioIndex >= 0) {
-      const std::string& name = m_scenarios[std::size_t(c.scenarioIndex)];
+      const std::string& name = m_scenarios[std::size_t(c.scenarioIndex)].name;
       try {
         startScenario(io::loadScenario(name));
       } catch (const std::exception& e) {
         m_status.message = "cannot load " + name + ": " + e.what();
       }
-    } else if (regionApplied || c.resetRequested || c.cycleChanged) {
-      restart();
+    } else if (regionApplied || c.resetRequested || c.cycleChanged || c.blood.changed) {
+      if (!restart() && c.blood.changed) {
+        // Back to what runs, so that Reset restarts what is shown.
+        c.blood = m_runningBlood;
+        m_status.message += " (blood settings put back)";
+      }
       if (regionApplied && m_status.message.empty())
         m_status.message = "beating region applied: " + std::to_string(m_region.selection().count()) +
                            " vertices; restarted from t = 0";
     }
     if (c.viewRequested) resetCamera(*c.viewRequested);
     if (c.resetCameraRequested) resetCamera(render::View::Front);
-    c.scenarioChanged = c.resetRequested = c.cycleChanged = c.resetCameraRequested = false;
+    c.scenarioChanged = c.resetRequested = c.cycleChanged = c.resetCameraRequested = c.blood.changed = false;
     c.viewRequested.reset();
   }
 
   // Paints along the cursor's path since the last frame (window pixels), every half brush
   // radius, so a fast stroke leaves no gaps.
   void paintStroke(float x0, float y0, float x1, float y1, int width, int height, bool erase) {
-    if (!m_sim->hasHeart()) return;
+    if (!m_status.hasHeart) return;
     BrushQuery query;
     query.view = brushView(m_camera->camera(), width, height);
     query.radius = m_controls.region.brushRadiusPx;
@@ -228,14 +281,14 @@ class ViewerApp {
       const float t = float(i) / float(steps);
       query.centreX = x0 + t * (x1 - x0);
       query.centreY = y0 + t * (y1 - y0);
-      m_region.paint(*m_sim, query, erase, m_controls.region);
+      m_dabs.push_back({query, erase});
     }
   }
 
   // The brush's outline at the cursor while painting: orange adds, blue removes (Shift).
   void drawBrushOutline() const {
     const ImGuiIO& io = ImGui::GetIO();
-    if (!m_controls.region.paintMode || io.WantCaptureMouse || !m_sim->hasHeart()) return;
+    if (!m_controls.region.paintMode || io.WantCaptureMouse || !m_status.hasHeart) return;
     const float r = m_controls.region.brushRadiusPx;
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     draw->AddCircle(io.MousePos, r, IM_COL32(30, 30, 30, 200), 48, 3.0f);
@@ -243,58 +296,32 @@ class ViewerApp {
                     48, 1.5f);
   }
 
-  // Steps toward wall time within the frame's budget; the achieved pace goes to the status.
-  void advance(double wallSeconds) {
-    const double dt = double(m_sim->scenario().simulation.dt);
-    long owed = 0;
-    if (m_controls.stepRequested) {
-      m_controls.playing = false;
-      owed = 1;
-    } else if (m_controls.playing) {
-      owed = m_pacing.owe(std::min(wallSeconds, 0.1), m_controls.speed, dt);
-    }
-    m_controls.stepRequested = false;
-    long taken = 0;
-    const auto start = Clock::now();
-    while (taken < owed) {
-      m_sim->step();
-      ++taken;
-      if (std::chrono::duration<double>(Clock::now() - start).count() > kStepBudgetSeconds) break;
-    }
-    const bool behind = m_controls.playing && m_pacing.settle(owed, taken, dt);
-    if (m_controls.playing && wallSeconds > 0) {
-      const double factor = double(taken) * dt / std::min(wallSeconds, 0.1);
-      m_status.realTimeFactor += 0.1 * (factor - m_status.realTimeFactor);
-    }
-    // Behind when the budget cut the steps short and the pace is clearly below the request.
-    m_status.behind = behind && m_status.realTimeFactor < 0.95 * double(m_controls.speed);
-    if (taken > 0) {
-      const cardiac::TissueStats tissue = m_sim->tissueStats();
-      if (!tissue.finite) {
-        m_controls.playing = false;
-        char text[160];
-        std::snprintf(text, sizeof text,
-                      "simulation became invalid at t = %.3f s (particle %lld not finite); Reset",
-                      m_sim->time(), static_cast<long long>(tissue.firstNonFinite));
-        m_status.message = text;
-      }
-    }
-  }
-
-  void updateStatus(double frameSeconds) {
-    const cardiac::HeartSimulation& sim = *m_sim;
-    m_status.scenarioName = sim.scenario().name;
-    m_status.time = sim.time();
-    m_status.dt = double(sim.scenario().simulation.dt);
-    m_status.hasHeart = sim.hasHeart();
-    m_status.hasBlood = sim.hasBlood();
-    m_status.physiological = sim.scenario().cycle.mode == cardiac::TimingMode::Physiological;
-    m_status.phase =
-        sim.hasHeart() && sim.scenario().cycle.enabled ? cardiac::phaseName(sim.lastPhase()) : "";
-    m_status.cavityMl = sim.hasHeart() ? double(sim.cavityVolume()) * 1e6 : -1;
-    m_status.speedMax = render::defaultSpeedScale(sim.scenario());
+  // The frame's one visit to the simulation thread's state (the worker waits meanwhile, so it
+  // is kept short): controls in; brush dabs applied; status, plot samples and the scene out.
+  render::Scene exchange(double frameSeconds, const render::SceneOptions& options) {
+    render::Scene scene;
+    m_runner.access([&](SimulationState& s) {
+      ViewerControls& c = m_controls;
+      // Play / pause from the panel goes to the thread; a pause from the thread (after Step, or
+      // an invalid simulation) comes back to the panel.
+      if (c.playing != m_sentPlaying) s.playing = c.playing;
+      if (c.stepRequested) s.stepRequested = true, s.playing = false;
+      c.stepRequested = false;
+      c.playing = m_sentPlaying = s.playing;
+      s.speed = double(c.speed);
+      const cardiac::HeartSimulation& sim = *s.sim;
+      for (const BrushDab& dab : m_dabs) m_region.paint(sim, dab.query, dab.erase, c.region);
+      for (const PumpSample& sample : s.newSamples) m_history.push(sample);
+      s.newSamples.clear();
+      if (!s.message.empty()) m_status.message = s.message, s.message.clear();
+      m_status.realTimeFactor = s.paceFactor;
+      m_status.behind = s.behind && s.playing;
+      fillStatus(sim, s);
+      scene = render::buildScene(sim, options);
+    });
+    m_dabs.clear();
     m_status.frameMs += 0.1 * (frameSeconds * 1000 - m_status.frameMs);
-    m_region.fillStatus(m_status.region, sim.scenario().cycle.enabled);
+    m_history.setWindow(double(m_controls.pump.plotWindowSeconds));
     int w = 0, h = 0;
     glfwGetWindowSize(m_window.handle, &w, &h);
     // The length of a pixel at the camera's target, where the heart is.
@@ -302,6 +329,31 @@ class ViewerApp {
                          std::tan(double(m_camera->camera().fovyDegrees) * M_PI / 360) /
                          double(std::max(h, 1));
     m_status.region.brushWorldRadius = pixel * double(m_controls.region.brushRadiusPx);
+    return scene;
+  }
+
+  void fillStatus(const cardiac::HeartSimulation& sim, const SimulationState& state) {
+    const cardiac::Scenario& scenario = sim.scenario();
+    m_status.scenarioName = scenario.name;
+    m_status.time = sim.time();
+    m_status.dt = double(scenario.simulation.dt);
+    m_status.hasHeart = sim.hasHeart();
+    m_status.hasBlood = sim.hasBlood();
+    m_status.physiological = scenario.cycle.mode == cardiac::TimingMode::Physiological;
+    m_status.phase = sim.hasHeart() && scenario.cycle.enabled ? cardiac::phaseName(sim.lastPhase()) : "";
+    m_status.cavity = sim.hasHeart() ? double(sim.cavityVolume()) : -1;
+    m_status.speedMax = render::defaultSpeedScale(scenario);
+    m_region.fillStatus(m_status.region, scenario.cycle.enabled);
+    PumpStatus& pump = m_status.pump;
+    const cardiac::Circulation* circulation = sim.circulation();
+    pump.hasHeart = sim.hasHeart();
+    pump.hasBlood = circulation != nullptr;
+    pump.beats = state.pump ? state.pump->readings() : BeatReadings{};
+    pump.cycleOn = scenario.cycle.enabled;
+    pump.phase = sim.lastPhase();
+    pump.thesisTiming = scenario.cycle.mode == cardiac::TimingMode::Thesis;
+    pump.valves = circulation ? circulation->lastStep().valves : cardiac::ValveStates{};
+    pump.valveMode = scenario.circulation.valveMode;
   }
 
   void saveScreenshot(const std::string& path, int width, int height) {
@@ -313,7 +365,7 @@ class ViewerApp {
     std::string name;
     do {
       char text[96];
-      std::snprintf(text, sizeof text, "heartsim_%s_%03d.png", m_sim->scenario().name.c_str(),
+      std::snprintf(text, sizeof text, "heartsim_%s_%03d.png", m_status.scenarioName.c_str(),
                     ++m_screenshotCount);
       name = text;
     } while (std::filesystem::exists(name));
@@ -330,27 +382,32 @@ class ViewerApp {
     ImGui::NewFrame();
     handleInput();
     applyRequests();
-    advance(wallSeconds);
-    updateStatus(wallSeconds);
+    // The panel's display settings of the last frame: the panels are drawn below, from the
+    // status this exchange brings.
+    render::SceneOptions options;
+    options.clip = m_controls.clip && m_status.hasHeart;
+    options.clipZ = m_controls.clipZ;
+    options.wallOpacity = m_controls.wallOpacity;
+    options.beating = m_region.highlight(m_controls.region);
+    const render::Scene scene = exchange(wallSeconds, options);
 
     int w = 0, h = 0, fbw = 0, fbh = 0;
     glfwGetWindowSize(m_window.handle, &w, &h);
     glfwGetFramebufferSize(m_window.handle, &fbw, &fbh);
     drawControlPanel(m_controls, m_status, m_scenarios, h);
-    drawStatusOverlay(m_status, w);
+    drawPumpPanel(m_controls.pump, m_status.pump, m_history, w, h);
+    drawStatusOverlay(m_status, float(w) - rightPanelWidth());
+    drawColourKey(m_status, kPanelWidth, h);
     drawHelpWindow(m_controls.showHelp, w, h);
     drawBrushOutline();
     ImGui::Render();
 
     if (fbw > 0 && fbh > 0) {
-      render::SceneOptions options;
-      options.clip = m_controls.clip && m_sim->hasHeart();
-      options.clipZ = m_controls.clipZ;
-      options.wallOpacity = m_controls.wallOpacity;
-      options.beating = m_region.highlight(m_controls.region);
-      render::Scene scene = render::buildScene(*m_sim, options);
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
-      m_renderer->draw(scene, m_camera->camera(), fbw, fbh);
+      // The panels are opaque: the scene is drawn only between them.
+      const double pixels = double(fbw) / double(std::max(w, 1));
+      m_renderer->draw(scene, m_camera->camera(), fbw, fbh, int(std::floor(kPanelWidth * pixels)),
+                       int(std::ceil((double(w) - rightPanelWidth()) * pixels)));
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       if (!captureTo.empty()) saveScreenshot(captureTo, fbw, fbh);
       if (m_controls.screenshotRequested) {

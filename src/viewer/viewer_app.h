@@ -1,7 +1,8 @@
 #pragma once
 // The interactive viewer behind `heartsim view`: a GLFW window with an OpenGL 3.3 core context,
-// the scene drawn by the same render::Renderer as `heartsim render`, a Dear ImGui control
-// panel, and the simulation stepped between frames at real-time pace (docs/viewer.md).
+// the scene drawn by the same render::Renderer as `heartsim render`, Dear ImGui panels (the
+// controls on the left, the heart as a pump on the right), and the simulation stepped at
+// real-time pace in its own thread (simulation_runner.h, docs/viewer.md).
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -28,20 +29,5 @@ struct ViewerOptions {
 // DisplayError when no window can be opened, std::invalid_argument when the scenario is
 // rejected by the model, std::runtime_error when the screenshot cannot be written.
 void runViewer(const ViewerOptions& options);
-
-// The time step budget of one frame: stepping stops after this much wall time so the window
-// keeps answering (s).
-inline constexpr double kStepBudgetSeconds = 1.0 / 30;
-
-// Steps to take this frame to keep simulated time on wall time: `debt` (simulated seconds
-// owed, carried between frames) grows by wallSeconds * speed; returns whole steps of dt.
-struct Pacing {
-  double debt = 0;
-  // Adds the frame's share; returns how many steps are owed now.
-  long owe(double wallSeconds, double speed, double dt);
-  // After stepping: `taken` of the owed steps were done. When the budget ran out first the
-  // rest is dropped (true is returned: the simulation is behind real time).
-  bool settle(long owed, long taken, double dt);
-};
 
 }  // namespace hs::viewer

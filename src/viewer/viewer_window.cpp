@@ -27,9 +27,19 @@ void onGlfwError(int /*code*/, const char* description) {
   lastGlfwError() = description ? description : "unknown";
 }
 
+// Mesa's CPU renderers name themselves in GL_RENDERER.
+bool softwareRenderer() {
+  const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (!name) return false;
+  const std::string renderer = name;
+  for (const char* cpu : {"llvmpipe", "softpipe", "swrast"})
+    if (renderer.find(cpu) != std::string::npos) return true;
+  return false;
+}
+
 }  // namespace
 
-Window::Window(int width, int height) {
+Window::Window(int width, int height, bool softwareAntialias) {
   glfwSetErrorCallback(onGlfwError);
   if (!glfwInit())
     throw DisplayError("`heartsim view` needs a display (" + lastGlfwError() +
@@ -38,14 +48,24 @@ Window::Window(int width, int height) {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  glfwWindowHint(GLFW_SAMPLES, 4);
-  handle = glfwCreateWindow(width, height, "heartsim", nullptr, nullptr);
-  if (!handle) {
-    glfwTerminate();
-    throw DisplayError("`heartsim view` cannot open an OpenGL 3.3 window (" + lastGlfwError() +
-                       "); `heartsim render` draws images without a display");
+  // Hidden until it is known whether the renderer is a GPU: a software one gets a window
+  // without multisampling instead (the samples are fixed when the window is made).
+  glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+  for (const int samples : {4, 0}) {
+    glfwWindowHint(GLFW_SAMPLES, samples);
+    handle = glfwCreateWindow(width, height, "heartsim", nullptr, nullptr);
+    if (!handle) {
+      glfwTerminate();
+      throw DisplayError("`heartsim view` cannot open an OpenGL 3.3 window (" + lastGlfwError() +
+                         "); `heartsim render` draws images without a display");
+    }
+    glfwMakeContextCurrent(handle);
+    multisampled = samples > 0;
+    if (samples == 0 || softwareAntialias || !softwareRenderer()) break;
+    glfwDestroyWindow(handle);
+    handle = nullptr;
   }
-  glfwMakeContextCurrent(handle);
+  glfwShowWindow(handle);
   glfwSwapInterval(1);
 }
 

@@ -9,10 +9,14 @@ struct GLFWwindow;
 namespace hs::viewer {
 
 // GLFW's window and library as one owner. Throws DisplayError (viewer_app.h) when there is no
-// display or no OpenGL 3.3 context on it.
+// display or no OpenGL 3.3 context on it. The window is antialiased (4x multisampling) unless
+// the OpenGL implementation draws on the CPU (Mesa llvmpipe, softpipe, swrast: no GPU, e.g.
+// under Xvfb) and `softwareAntialias` is false: there multisampling costs about 40% of the
+// frame time.
 struct Window {
   GLFWwindow* handle = nullptr;
-  Window(int width, int height);
+  bool multisampled = false;
+  Window(int width, int height, bool softwareAntialias);
   ~Window();
   Window(const Window&) = delete;
   Window& operator=(const Window&) = delete;

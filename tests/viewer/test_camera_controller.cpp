@@ -139,27 +139,5 @@ TEST(CameraController, ClipPlanesKeepTheSceneInView) {
   }
 }
 
-TEST(Pacing, SimulatedTimeFollowsWallTime) {
-  Pacing pacing;
-  const double dt = 0.005;
-  long total = 0;
-  for (int frame = 0; frame < 100; ++frame) {
-    const long owed = pacing.owe(1.0 / 60, 1.0, dt);
-    EXPECT_FALSE(pacing.settle(owed, owed, dt));
-    total += owed;
-  }
-  EXPECT_NEAR(double(total) * dt, 100.0 / 60, dt);
-}
-
-TEST(Pacing, WhatTheBudgetCannotDoIsDroppedAndReported) {
-  Pacing pacing;
-  const double dt = 0.005;
-  const long owed = pacing.owe(0.1, 1.0, dt);  // 20 steps owed
-  EXPECT_EQ(owed, 20);
-  EXPECT_TRUE(pacing.settle(owed, 5, dt));
-  EXPECT_LE(pacing.debt, dt);  // not carried over to make the next frames slow too
-  EXPECT_EQ(pacing.owe(0.0, 1.0, dt), pacing.debt >= dt ? 1 : 0);
-}
-
 }  // namespace
 }  // namespace hs::viewer

@@ -1,0 +1,190 @@
+#include "viewer/plot_widget.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace hs::viewer {
+namespace {
+
+struct Frame {
+  float x0, y0, x1, y1;  // the chart's inner rectangle (pixels)
+  double t0, t1;         // time range (s)
+  AxisRange range;       // value range (shown units)
+  float x(double t) const { return x0 + float((t - t0) / (t1 - t0)) * (x1 - x0); }
+  float y(double v) const { return y1 - float((v - range.lo) / (range.hi - range.lo)) * (y1 - y0); }
+};
+
+// Tick labels with as many decimals as the step needs.
+std::string formatTick(double value, double step) {
+  char text[32];
+  const int decimals = std::clamp(int(-std::floor(std::log10(step) + 1e-9)), 0, 6);
+  if (std::abs(value) < step * 1e-6) value = 0;  // no "-0"
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
+std::string valueWithUnits(const PlotSpec& spec, double shown) {
+  std::string text = formatValue(shown) + " " + spec.unit;
+  if (!spec.secondUnit.empty())
+    text += " (" + formatValue(shown * spec.secondScale) + " " + spec.secondUnit + ")";
+  return text;
+}
+
+// Coloured swatch, label and latest value of each line, wrapped to the panel's width.
+void drawLegend(const PlotSpec& spec, const PlotHistory& history) {
+  const float right = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;
+  for (std::size_t i = 0; i < spec.series.size(); ++i) {
+    const PlotSeries& s = spec.series[i];
+    std::string text = s.label;
+    if (!history.empty()) text += " " + valueWithUnits(spec, history.newest().*s.value * spec.scale);
+    const float swatch = ImGui::GetTextLineHeight() * 0.7f;
+    const float width = swatch + 4 + ImGui::CalcTextSize(text.c_str()).x;
+    if (i > 0) {
+      ImGui::SameLine(0, 12);
+      if (ImGui::GetCursorScreenPos().x + width > right) ImGui::NewLine();
+    }
+    const ImVec2 p = ImGui::GetCursorScreenPos();
+    const float top = p.y + (ImGui::GetTextLineHeight() - swatch) / 2;
+    ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(p.x, top), ImVec2(p.x + swatch, top + swatch), s.colour);
+    ImGui::Dummy(ImVec2(swatch, ImGui::GetTextLineHeight()));
+    ImGui::SameLine(0, 4);
+    ImGui::TextUnformatted(text.c_str());
+  }
+}
+
+void drawAxes(ImDrawList* draw, const Frame& f) {
+  const ImU32 grid = IM_COL32(225, 228, 235, 255), text = IM_COL32(70, 70, 80, 255);
+  const float lineHeight = ImGui::GetTextLineHeight();
+  const AxisTicks yt =
+      niceTicks(f.range.lo, f.range.hi, std::max(2, int((f.y1 - f.y0) / (lineHeight * 1.6f))));
+  for (int i = 0; i < yt.count; ++i) {
+    const double v = yt.first + i * yt.step;
+    const float y = std::round(f.y(v));
+    draw->AddLine(ImVec2(f.x0, y), ImVec2(f.x1, y),
+                  std::abs(v) < yt.step * 1e-6 ? IM_COL32(160, 160, 170, 255) : grid);
+    const std::string label = formatTick(v, yt.step);
+    const ImVec2 size = ImGui::CalcTextSize(label.c_str());
+    draw->AddText(ImVec2(f.x0 - 4 - size.x, y - size.y / 2), text, label.c_str());
+  }
+  const AxisTicks xt = niceTicks(f.t0, f.t1, std::max(2, int((f.x1 - f.x0) / 45)));
+  for (int i = 0; i < xt.count; ++i) {
+    const double t = xt.first + i * xt.step;
+    const float x = std::round(f.x(t));
+    draw->AddLine(ImVec2(x, f.y0), ImVec2(x, f.y1), grid);
+    const std::string label = formatTick(t, xt.step);
+    const float w = ImGui::CalcTextSize(label.c_str()).x;
+    draw->AddText(ImVec2(std::clamp(x - w / 2, f.x0, f.x1 - w), f.y1 + 2), text, label.c_str());
+  }
+  draw->AddText(ImVec2(f.x0 - ImGui::CalcTextSize("t (s)").x - 4, f.y1 + 2), text, "t (s)");
+  draw->AddRect(ImVec2(f.x0, f.y0), ImVec2(f.x1 + 1, f.y1 + 1), IM_COL32(150, 150, 160, 255));
+}
+
+// One line, at most two points per pixel column (the column's lowest and highest value in the
+// order they came), so thousands of steps cost a few hundred points and no spike is lost.
+void drawSeries(ImDrawList* draw, const Frame& f, const PlotHistory& history, std::size_t from,
+                const PlotSeries& s, double scale) {
+  std::vector<ImVec2> points;
+  int column = std::numeric_limits<int>::min();
+  std::size_t lowAt = 0, highAt = 0;
+  double low = 0, high = 0;
+  auto flush = [&] {
+    if (column == std::numeric_limits<int>::min()) return;
+    const float x = float(column);
+    if (lowAt <= highAt) {
+      points.emplace_back(x, f.y(low));
+      if (highAt != lowAt) points.emplace_back(x, f.y(high));
+    } else {
+      points.emplace_back(x, f.y(high));
+      points.emplace_back(x, f.y(low));
+    }
+  };
+  for (std::size_t i = from; i < history.size(); ++i) {
+    const double v = history[i].*s.value * scale;
+    const int c = int(std::floor(f.x(history[i].time)));
+    if (c != column) {
+      flush();
+      column = c, low = high = v, lowAt = highAt = i;
+    } else if (v < low) {
+      low = v, lowAt = i;
+    } else if (v > high) {
+      high = v, highAt = i;
+    }
+  }
+  flush();
+  if (points.size() >= 2) draw->AddPolyline(points.data(), int(points.size()), s.colour, 0, 1.5f);
+}
+
+void hoverTooltip(ImDrawList* draw, const Frame& f, const PlotSpec& spec, const PlotHistory& history) {
+  const float mx = ImGui::GetIO().MousePos.x;
+  if (mx < f.x0 || mx > f.x1 || history.empty()) return;
+  const double t = f.t0 + double(mx - f.x0) / double(f.x1 - f.x0) * (f.t1 - f.t0);
+  const std::size_t i = std::min(history.lowerBound(t), history.size() - 1);
+  const PumpSample& sample = history[i];
+  draw->AddLine(ImVec2(f.x(sample.time), f.y0), ImVec2(f.x(sample.time), f.y1), IM_COL32(90, 90, 100, 160));
+  ImGui::BeginTooltip();
+  ImGui::Text("t = %.3f s", sample.time);
+  for (const PlotSeries& s : spec.series)
+    ImGui::Text("%s: %s", s.label, valueWithUnits(spec, sample.*s.value * spec.scale).c_str());
+  ImGui::EndTooltip();
+}
+
+}  // namespace
+
+std::string formatValue(double value) {
+  char text[32];
+  if (!std::isfinite(value)) return "-";
+  if (std::abs(value) >= 1000)
+    std::snprintf(text, sizeof text, "%.0f", value);
+  else
+    std::snprintf(text, sizeof text, "%.4g", std::abs(value) < 1e-12 ? 0.0 : value);
+  return text;
+}
+
+void drawPlot(const char* id, const PlotSpec& spec, const PlotHistory& history, float height) {
+  ImGui::PushID(id);
+  ImGui::Text("%s (%s)", spec.title, spec.unit.c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", spec.tooltip);
+  drawLegend(spec, history);
+
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const float width = ImGui::GetContentRegionAvail().x;
+  ImGui::InvisibleButton("chart", ImVec2(width, height));
+  const bool hovered = ImGui::IsItemHovered();
+  const float lineHeight = ImGui::GetTextLineHeight();
+
+  Frame f{};
+  f.x0 = origin.x + ImGui::CalcTextSize("-0000.0").x + 6;
+  f.x1 = origin.x + width - 6;
+  f.y0 = origin.y + lineHeight / 2;
+  f.y1 = origin.y + height - lineHeight - 3;
+  // The window's right edge is now; until a window's worth has run, time starts at the left.
+  const double window = std::max(history.window(), 1e-3);
+  f.t1 = history.empty() ? window : std::max(history.newest().time, window);
+  f.t0 = f.t1 - window;
+  const std::size_t from = history.empty() ? 0 : std::min(history.lowerBound(f.t0), history.size() - 1);
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const PlotSeries& s : spec.series)
+    for (std::size_t i = from > 0 ? from - 1 : 0; i < history.size(); ++i) {
+      const double v = history[i].*s.value * spec.scale;
+      lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+  f.range = niceRange(history.empty() ? 0 : lo, history.empty() ? 1 : hi, spec.includeZero,
+                      std::max(2, int((f.y1 - f.y0) / (lineHeight * 1.6f))));
+
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->AddRectFilled(ImVec2(f.x0, f.y0), ImVec2(f.x1, f.y1), IM_COL32(255, 255, 255, 255));
+  drawAxes(draw, f);
+  draw->PushClipRect(ImVec2(f.x0, f.y0), ImVec2(f.x1 + 1, f.y1 + 1), true);
+  for (const PlotSeries& s : spec.series)
+    drawSeries(draw, f, history, from > 0 ? from - 1 : 0, s, spec.scale);
+  if (history.empty()) draw->AddText(ImVec2(f.x0 + 8, f.y0 + 4), IM_COL32(120, 120, 130, 255), "no data yet");
+  draw->PopClipRect();
+  if (hovered) hoverTooltip(draw, f, spec, history);
+  ImGui::PopID();
+}
+
+}  // namespace hs::viewer

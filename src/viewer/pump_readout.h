@@ -1,0 +1,90 @@
+#pragma once
+// The heart as a pump, for the viewer's panel: the clinical figures of the beat in progress and
+// of the last complete beat (EDV, ESV, SV, EF, cardiac output, regurgitation, heart rate), in
+// the units a clinician reads, and the per-step values the live plots draw. Pure arithmetic on
+// what the simulation reports after each step; no GL or ImGui, so it is unit-tested.
+#include <array>
+#include <optional>
+
+#include "cardiac/beat_metrics.h"
+#include "cardiac/circulation.h"
+
+namespace hs::viewer {
+
+// Volumes through the two orifices in the step just taken (m^3): the particles that crossed
+// each disc, each carrying the volume m / rho0. The same figures as `heartsim run`'s
+// stepFlows (apps/flow_report.cpp), which lives in apps/ and so cannot be used here.
+cardiac::ValveFlows stepFlows(const cardiac::Circulation& circulation);
+
+// Display units. The thesis-scale models are metres across (cavity ~7 m^3): their volumes in
+// mL would read 7,000,000, so they are shown in m^3, and their pressures have no clinical
+// meaning, so no mmHg is given. A real heart's cavity is ~0.12 L.
+struct VolumeScale {
+  bool thesis = false;
+  double volume = 1e6;               // m^3 -> shown volume unit
+  const char* volumeUnit = "mL";     // also per beat: EDV, ESV, SV, regurgitation
+  const char* flowUnit = "mL/s";     // valve flow rate
+  double output = 1e3 * 60;          // m^3/s -> shown cardiac output unit
+  const char* outputUnit = "L/min";  // cardiac output
+};
+// Cavity volumes of 10 L and more (no heart is that large) are thesis scale.
+inline constexpr double kThesisScaleVolume = 1e-2;  // m^3
+VolumeScale volumeScaleFor(double cavityVolume);
+
+inline constexpr double kPascalPerMmHg = 133.322;
+
+// One beat's figures in display units (volumeScale), heart rate from the beat's length.
+struct ClinicalFigures {
+  double edv = 0, esv = 0, strokeVolume = 0;  // volume unit
+  double ejectionFraction = 0;                // percent
+  double cardiacOutput = 0;                   // output unit
+  double regurgitantVolume = 0;               // volume unit
+  double heartRate = 0;                       // beats per minute; 0 for an unfinished beat
+  bool complete = false;                      // ended by the next systole
+};
+ClinicalFigures clinicalFigures(const cardiac::BeatSummary& beat, const VolumeScale& scale);
+
+// What one step adds to the plots (SI): the cavity volume, the net valve flow rates and the
+// mean pressures of the three regions.
+struct PumpSample {
+  double time = 0;                                                 // s, at the end of the step
+  double cavity = 0;                                               // m^3
+  double mitralRate = 0, aorticRate = 0;                           // m^3/s, forward - backward over the step
+  double pressureLv = 0, pressureInflow = 0, pressureOutflow = 0;  // Pa
+};
+// The flows of one step of length dt as rates (m^3/s).
+void setFlowRates(PumpSample& sample, const cardiac::ValveFlows& flows, double dt);
+
+// The beat in progress and the last complete one.
+struct BeatReadings {
+  std::optional<cardiac::BeatSummary> current;  // once its systole has ended (ESV known)
+  std::optional<cardiac::BeatSummary> last;     // the last complete beat
+  int beatsCompleted = 0;
+  bool beating = false;     // a beat is in progress
+  double currentEdv = 0;    // m^3, the beat in progress's end-diastolic volume
+  double currentStart = 0;  // s
+};
+
+// Feeds a cardiac::BeatTracker from the simulation as `heartsim run` does: record(start time
+// of the step, phase during it, cavity volume at its end, flows) after each step. It keeps one
+// tracker per beat, so reading the beat in progress (a copy closed with finish()) costs one
+// beat however long the viewer runs.
+class PumpReadout {
+ public:
+  // initialVolume: the cavity volume before the first step (m^3); dt: the step (s).
+  PumpReadout(double initialVolume, double dt);
+  void record(double startTime, cardiac::Phase phase, double volume, const cardiac::ValveFlows& flows);
+  [[nodiscard]] BeatReadings readings() const;
+
+ private:
+  cardiac::BeatTracker m_tracker;  // the beat in progress (and, until the next starts, the last)
+  std::optional<cardiac::BeatSummary> m_last;
+  int m_completed = 0;
+  double m_dt = 0;
+  double m_lastVolume = 0;
+  double m_currentEdv = 0, m_currentStart = 0;
+  bool m_beating = false;
+  cardiac::Phase m_previous = cardiac::Phase::Rest;
+};
+
+}  // namespace hs::viewer

@@ -1,0 +1,86 @@
+#pragma once
+// The viewer's simulation thread. It steps the simulation at real-time pace (pacing.h) while
+// the main thread draws, and after each step records the pump's figures (pump_readout.h).
+//
+// Sharing: everything the two threads share is in SimulationState, guarded by one mutex. The
+// worker holds it for one step at a time; the main thread reads and writes the state only
+// inside access(), which first tells the worker to let it in, so it waits at most for the step
+// in progress (a plain mutex would let the worker take it again at once, step after step).
+// The main thread copies what it draws (render::buildScene, the status, new plot samples)
+// inside one access() per frame, then draws without the lock.
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cardiac/heart_simulation.h"
+#include "viewer/pacing.h"
+#include "viewer/pump_readout.h"
+
+namespace hs::viewer {
+
+struct SimulationState {
+  std::unique_ptr<cardiac::HeartSimulation> sim;
+  std::optional<PumpReadout> pump;     // with a heart
+  std::vector<PumpSample> newSamples;  // recorded since the main thread last took them
+  bool playing = true;
+  double speed = 1;            // simulated seconds per wall second
+  bool stepRequested = false;  // one step, then pause
+  // Written by the worker.
+  double paceFactor = 1;  // simulated seconds per wall second achieved
+  bool behind = false;    // cannot keep up with `speed`
+  std::string message;    // "simulation became invalid ...", taken by the main thread
+  std::uint64_t restarts = 0;
+};
+
+class SimulationRunner {
+ public:
+  // threads: the simulation's OpenMP threads. Starts the worker, which waits for start().
+  explicit SimulationRunner(int threads);
+  ~SimulationRunner();
+  SimulationRunner(const SimulationRunner&) = delete;
+  SimulationRunner& operator=(const SimulationRunner&) = delete;
+
+  // A new simulation of `scenario` from t = 0 (also a restart). Built before the lock is
+  // taken, so the one running keeps running meanwhile and stays when this throws
+  // (std::invalid_argument: the model or cycle rejected the scenario).
+  void start(const cardiac::Scenario& scenario);
+
+  // Runs fn(SimulationState&) on the calling (main) thread with the worker held between steps.
+  template <class Fn>
+  decltype(auto) access(Fn&& fn) {
+    Access guard(*this);
+    return fn(m_state);
+  }
+
+ private:
+  struct Access {
+    explicit Access(SimulationRunner& runner);
+    ~Access();
+    Access(const Access&) = delete;
+    Access& operator=(const Access&) = delete;
+    SimulationRunner& runner;
+    std::unique_lock<std::mutex> lock;
+  };
+  void run();
+  void stepOnce();
+
+  int m_threads;
+  std::mutex m_mutex;
+  std::condition_variable m_wake;
+  std::atomic<bool> m_mainWaiting{false};
+  bool m_stop = false;  // guarded by m_mutex
+  SimulationState m_state;
+  // The worker's own (no lock needed).
+  Pacer m_pacer;
+  PaceMeter m_meter;
+  std::uint64_t m_seenRestarts = 0;
+  std::thread m_worker;  // last: starts after everything it uses exists
+};
+
+}  // namespace hs::viewer
