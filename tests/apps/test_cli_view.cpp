@@ -165,6 +165,27 @@ TEST_F(ViewUnderXvfb, FluidAtRestScreenshotShowsTheBlood) {
   EXPECT_LT(countPixels(image, wallRed), 640 * 480 / 200);
 }
 
+// Blood in the speed palette (blue through cyan and green to yellow), not the grey-blue
+// background or the red wall.
+bool bloodPalette(hs::viz::Rgb c) {
+  const bool blueOrCyan = c.b > 120 && c.b > c.r + 60;
+  const bool green = c.g > c.r + 40 && c.g > c.b + 40;
+  const bool yellow = c.r > 180 && c.g > 180 && c.b < 100;
+  return blueOrCyan || green || yellow;
+}
+
+// The issue's own check: the physiological scenario after 120 frames shows heart and blood.
+TEST_F(ViewUnderXvfb, NormalScreenshotShowsHeartAndBlood) {
+  const fs::path dir = scratchDir("view_normal");
+  const CliResult r = view("normal --frames 120 --screenshot s.png --size 1280x800", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const hs::viz::Image image = hs::viz::Image::loadPng((dir / "s.png").string());
+  EXPECT_GT(variance(image), 200.0);
+  EXPECT_GT(countPixels(image, wallRed), 1280 * 800 / 50);
+  // The panels' light-blue buttons alone are about 2% of the window.
+  EXPECT_GT(countPixels(image, bloodPalette), 1280 * 800 / 12);
+}
+
 TEST_F(ViewUnderXvfb, BadSizeAndUnknownScenarioAreRejectedWithOneLine) {
   const fs::path dir = scratchDir("view_bad");
   for (const std::string args :
