@@ -92,6 +92,23 @@ void scenarioSection(ViewerControls& c, const ViewerStatus& s, const std::vector
               ? "Beats per minute (physiological timing); applied on release, restarts the simulation"
               : "Beats per minute; switches the cycle to physiological timing (the scenario uses the "
                 "thesis's step-count timing) and restarts the simulation");
+  // Contraction strength, in the scenario's own timing (the sliders reach 40% of the cavity's
+  // radius: beyond that the wall folds).
+  if (s.physiological) {
+    ImGui::SliderFloat("contraction", &c.contraction, 0, 0.4f * s.heartSize, "%.3g m");
+    if (ImGui::IsItemDeactivatedAfterEdit()) c.cycleChanged = true;
+    tooltip("How far each beating point of the wall moves inward in one systole: a stronger "
+            "contraction ejects more (higher EF). Applied on release; restarts the simulation");
+  } else {
+    ImGui::SliderInt("phase length", &c.beatingDuration, 1, 40, "%d steps");
+    if (ImGui::IsItemDeactivatedAfterEdit()) c.cycleChanged = true;
+    tooltip("Thesis timing: time steps of each systole and each diastole (Table 5.4: 8). "
+            "Applied on release; restarts the simulation");
+    ImGui::SliderFloat("displacement", &c.beatingDisplace, 0, 0.1f * s.heartSize, "%.3g m/step");
+    if (ImGui::IsItemDeactivatedAfterEdit()) c.cycleChanged = true;
+    tooltip("Thesis timing: how far a beating point moves inward in each systolic step "
+            "(Table 5.4: 0.08 m). Applied on release; restarts the simulation");
+  }
   ImGui::EndDisabled();
 }
 

@@ -22,6 +22,9 @@ struct ViewerControls {
   int scenarioIndex = -1;  // into the scenario list; -1: a file given on the command line
   bool cycleEnabled = true;
   float heartRateBpm = 72;  // physiological mode
+  float contraction = 0;    // m, physiological mode: inward travel of a beating point per systole
+  int beatingDuration = 8;  // steps per phase, thesis mode (Table 5.4's BEATING_DURATION)
+  float beatingDisplace = 0;  // m per systolic step, thesis mode (BEATING_DISPLACE)
   bool clip = true;
   float clipZ = 0;  // m: what lies at z > clipZ is cut away
   float wallOpacity = 1;
@@ -33,7 +36,7 @@ struct ViewerControls {
   bool stepRequested = false;
   bool resetRequested = false;
   bool scenarioChanged = false;
-  bool cycleChanged = false;  // cycle on/off or the heart rate: restarts the simulation
+  bool cycleChanged = false;  // cycle on/off, heart rate or contraction: restarts the simulation
   bool screenshotRequested = false;
   bool resetCameraRequested = false;
   std::optional<render::View> viewRequested;
@@ -51,6 +54,7 @@ struct ViewerStatus {
   bool behind = false;        // the step budget could not keep up with the requested speed
   bool hasHeart = false, hasBlood = false;
   bool physiological = false;       // cycle timing mode (heart rate applies)
+  float heartSize = 1;              // m, the cavity's radius at the base: scales the beat's sliders
   double speedMax = 1;              // m/s at the top of the blood colour scale
   float clipMin = -1, clipMax = 1;  // range of the clipping plane's slider (m)
   std::string message;              // last event: "saved viewer.png", "simulation became invalid ..."

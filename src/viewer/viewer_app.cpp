@@ -120,6 +120,9 @@ class ViewerApp {
       s.cycle.mode = cardiac::TimingMode::Physiological;
       s.cycle.heartRateBpm = cardiac::Real(m_controls.heartRateBpm);
     }
+    s.cycle.contraction = cardiac::Real(m_controls.contraction);
+    s.cycle.beatingDuration = std::max(1, m_controls.beatingDuration);
+    s.cycle.beatingDisplace = cardiac::Real(m_controls.beatingDisplace);
     m_region.configure(s);
     if (s.blood.enabled) applyBloodControls(m_controls.blood, s);
     return s;
@@ -134,6 +137,9 @@ class ViewerApp {
     m_baseScenario = scenario;
     m_controls.cycleEnabled = scenario.cycle.enabled;
     m_controls.heartRateBpm = float(scenario.cycle.heartRateBpm);
+    m_controls.contraction = float(scenario.cycle.contraction);
+    m_controls.beatingDuration = scenario.cycle.beatingDuration;
+    m_controls.beatingDisplace = float(scenario.cycle.beatingDisplace);
     m_controls.blood = bloodControlsFrom(scenario, 0);
     m_region = RegionEditor();  // a region applied to the last scenario is not this one's
     if (!restart()) {
@@ -340,6 +346,7 @@ class ViewerApp {
     m_status.hasHeart = sim.hasHeart();
     m_status.hasBlood = sim.hasBlood();
     m_status.physiological = scenario.cycle.mode == cardiac::TimingMode::Physiological;
+    m_status.heartSize = float(scenario.geometry.endoRadius);
     m_status.phase = sim.hasHeart() && scenario.cycle.enabled ? cardiac::phaseName(sim.lastPhase()) : "";
     m_status.cavity = sim.hasHeart() ? double(sim.cavityVolume()) : -1;
     m_status.speedMax = render::defaultSpeedScale(scenario);
