@@ -116,6 +116,13 @@ HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
     if (waiting > 0) m_circulation->startWaiting(m_particles, m_firstBloodParticle, waiting);
     m_bloodIds.resize(m_particles.size() - m_firstBloodParticle);
     for (std::size_t k = 0; k < m_bloodIds.size(); ++k) m_bloodIds[k] = Index(k);
+    m_bloodOrigin.resize(m_bloodIds.size(), FlowRegion::Outside);
+    if (m_circulation)
+      for (std::size_t k = 0; k < m_bloodIds.size(); ++k) {
+        const Index i = m_firstBloodParticle + Index(k);
+        m_bloodOrigin[k] = m_circulation->parked(i) ? FlowRegion::Parked
+                                                    : m_circulation->classify(m_particles.position[i]);
+      }
     reorderBlood();
   }
 }

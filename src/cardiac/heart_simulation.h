@@ -65,6 +65,12 @@ class HeartSimulation {
   // Pressure (Pa) of each particle from the last density solve (0 for the wall), see
   // pbd::FluidSolver::pressures(); empty without blood.
   [[nodiscard]] const std::vector<Real>& pressures() const;
+  // Where a blood particle started (its FlowRegion at t = 0: inflow vessel, ventricle, or
+  // Parked for blood that began outside the model); Outside without a heart.
+  [[nodiscard]] FlowRegion bloodOrigin(Index particle) const {
+    const Index id = m_bloodIds[particle - m_firstBloodParticle];
+    return id < m_bloodOrigin.size() ? m_bloodOrigin[id] : FlowRegion::Outside;
+  }
   // A blood particle that is shown and measured (not parked outside the model).
   [[nodiscard]] bool bloodActive(Index particle) const {
     return particle >= m_firstBloodParticle && m_particles.inverseMass[particle] > Real(0);
@@ -91,6 +97,7 @@ class HeartSimulation {
   std::unique_ptr<Circulation> m_circulation;               // heart and blood
   Vec3 m_domainMin = Vec3::Zero(), m_domainMax = Vec3::Zero();  // outside: blood is lost
   std::vector<Index> m_bloodIds;
+  std::vector<FlowRegion> m_bloodOrigin;  // per blood id
   void reorderBlood();
   pbd::ParticleTetSettings wallContactSettings() const;
   std::vector<Real> m_restVolume;  // per model tet

@@ -100,21 +100,45 @@ viz::Rgb toRgb(const Vec3f& c) {
   return {byte(c.x()), byte(c.y()), byte(c.z())};
 }
 
-double defaultSpeedScale(const cardiac::Scenario& scenario) {
-  const double g = std::max(double(scenario.simulation.gravity.norm()), 1e-6);
-  // The height blood can fall through: the heart's (apex to the vessels' far ends), else the
-  // start block's.
+namespace {
+
+// The height blood can fall through: the heart's (apex to the vessels' far ends), else the
+// start block's.
+double fallHeight(const cardiac::Scenario& scenario) {
   const auto& model = scenario.geometry;
   const double heartHeight = double(model.endoLongAxis + model.wallThickness + model.baseThickness +
                                     std::max(model.inflowVesselLength, model.outflowVesselLength));
-  const double h = std::max(scenario.heart ? heartHeight
-                                           : double(scenario.blood.blockMax.y() - scenario.blood.blockMin.y()),
-                            1e-6);
-  const double v = std::sqrt(2 * g * h);
+  return std::max(scenario.heart ? heartHeight : double(scenario.blood.blockMax.y() - scenario.blood.blockMin.y()),
+                  1e-6);
+}
+
+// Up to 1, 1.5, 2, 3, 4, 5, 6 or 8 times a power of ten.
+double roundUpNicely(double v) {
   const double decade = std::pow(10.0, std::floor(std::log10(v)));
   for (double m : {1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0})
     if (m * decade >= v * (1 - 1e-9)) return m * decade;
   return 10 * decade;
+}
+
+}  // namespace
+
+double defaultPressureScale(const cardiac::Scenario& scenario) {
+  const double g = std::max(double(scenario.simulation.gravity.norm()), 1e-6);
+  return roundUpNicely(4 * double(scenario.blood.restDensity) * g * fallHeight(scenario));
+}
+
+Vec3f originColour(cardiac::FlowRegion origin) {
+  switch (origin) {
+    case cardiac::FlowRegion::InflowVessel: return Vec3f(0.15f, 0.35f, 0.95f);
+    case cardiac::FlowRegion::Ventricle: return Vec3f(0.98f, 0.6f, 0.1f);
+    case cardiac::FlowRegion::Parked: return Vec3f(0.2f, 0.8f, 0.3f);
+    default: return Vec3f(0.6f, 0.6f, 0.65f);
+  }
+}
+
+double defaultSpeedScale(const cardiac::Scenario& scenario) {
+  const double g = std::max(double(scenario.simulation.gravity.norm()), 1e-6);
+  return roundUpNicely(std::sqrt(2 * g * fallHeight(scenario)));
 }
 
 Box sceneBounds(const cardiac::HeartSimulation& sim) {
@@ -156,10 +180,23 @@ Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& option
     const double speedMax = options.speedMax > 0 ? options.speedMax : defaultSpeedScale(s);
     const auto& p = sim.particles();
     scene.particles.radius = float(s.blood.radius);
+    const double pressureMax = options.pressureMax > 0 ? options.pressureMax : defaultPressureScale(s);
+    const std::vector<pbd::Real>& pressure = sim.pressures();
     for (std::size_t i = sim.firstBloodParticle(); i < p.size(); ++i) {
       if (!sim.bloodActive(pbd::Index(i))) continue;  // parked outside the model (circulation.h)
       scene.particles.centres.push_back(toVec3f(p.position[i]));
-      scene.particles.colours.push_back(speedColour(double(p.velocity[i].norm()) / speedMax));
+      switch (options.bloodColour) {
+        case BloodColour::Speed:
+          scene.particles.colours.push_back(speedColour(double(p.velocity[i].norm()) / speedMax));
+          break;
+        case BloodColour::Pressure:
+          scene.particles.colours.push_back(
+              speedColour(i < pressure.size() ? double(pressure[i]) / pressureMax : 0.0));
+          break;
+        case BloodColour::Origin:
+          scene.particles.colours.push_back(originColour(sim.bloodOrigin(pbd::Index(i))));
+          break;
+      }
     }
   }
   return scene;

@@ -12,6 +12,9 @@
 
 namespace hs::render {
 
+// What the blood's colour shows.
+enum class BloodColour { Speed, Pressure, Origin };
+
 struct SceneOptions {
   // Cut the wall open: remove what lies at z > clipZ (anterior of the plane, toward the
   // front camera), so the cavity and the blood inside are visible.
@@ -19,6 +22,8 @@ struct SceneOptions {
   float clipZ = 0;        // m
   float wallOpacity = 1;  // < 1: see-through wall
   double speedMax = 0;    // m/s at the top of the colour scale; 0: defaultSpeedScale(scenario)
+  BloodColour bloodColour = BloodColour::Speed;
+  double pressureMax = 0;  // Pa at the top of the pressure scale; 0: defaultPressureScale(scenario)
   // The beating region drawn in beatingColour (thesis 4.3.3, Fig. 4.7): per model vertex,
   // nonzero = tinted. Unset: the region the scenario chose (cycle.segments, vertices or
   // sphere) while its cycle is on; a scenario where the whole myocardium beats singles nothing
@@ -42,6 +47,14 @@ viz::Rgb toRgb(const Vec3f& colour);
 // sqrt(2 g H) over the height H of the blood's start block, rounded up to 1, 1.5, 2, 3, 4, 5,
 // 6 or 8 times a power of ten; blood cannot go much faster than that.
 double defaultSpeedScale(const cardiac::Scenario& scenario);
+
+// The pressure at the top of the colour scale when none is given: four times the hydrostatic
+// pressure over the same height as defaultSpeedScale (rho0 g H), rounded up the same way.
+// Systolic pressures above it are drawn at the top colour.
+double defaultPressureScale(const cardiac::Scenario& scenario);
+// Origin colours: blood that started in the inflow vessel (blue), in the ventricle (orange),
+// or outside the model, entering through the loop (green).
+Vec3f originColour(cardiac::FlowRegion origin);
 
 // What the cameras frame: the wall's rest shape (so every time is seen from the same place)
 // and the container, or the blood's start block when there is neither.

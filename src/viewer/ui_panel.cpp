@@ -22,9 +22,9 @@ void sectionTitle(const char* title) {
 
 ImU32 colourU32(const render::Vec3f& c) { return ImGui::GetColorU32(ImVec4(c.x(), c.y(), c.z(), 1)); }
 
-// The blood colour scale as a horizontal bar, 0 on the left, speedMax on the right.
-void speedLegend(double speedMax) {
-  ImGui::TextUnformatted("Blood speed (m/s)");
+// The blood colour scale as a horizontal bar, 0 on the left, top on the right.
+void scaleLegend(const char* title, double speedMax, const char* unit) {
+  ImGui::TextUnformatted(title);
   const float width = ImGui::GetContentRegionAvail().x, height = 14;
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -47,7 +47,22 @@ void speedLegend(double speedMax) {
   ImGui::TextUnformatted(mid);
   ImGui::SameLine(width - ImGui::CalcTextSize(top).x + ImGui::GetStyle().WindowPadding.x);
   ImGui::TextUnformatted(top);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Blue = at rest, yellow = %g m/s or faster", speedMax);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Blue = 0, yellow = %g %s or more", speedMax, unit);
+}
+
+// Blood coloured by where it started: one swatch per origin.
+void originLegend() {
+  ImGui::TextUnformatted("Blood by where it started");
+  const std::pair<cardiac::FlowRegion, const char*> rows[] = {
+      {cardiac::FlowRegion::InflowVessel, "in the inflow vessel"},
+      {cardiac::FlowRegion::Ventricle, "in the ventricle"},
+      {cardiac::FlowRegion::Parked, "outside: entered through the loop"}};
+  for (const auto& [origin, text] : rows) {
+    const render::Vec3f c = render::originColour(origin);
+    ImGui::TextColored(ImVec4(c.x(), c.y(), c.z(), 1), "o");
+    ImGui::SameLine();
+    ImGui::TextUnformatted(text);
+  }
 }
 
 void simulationSection(ViewerControls& c, const ViewerStatus& s) {
@@ -122,6 +137,12 @@ void displaySection(ViewerControls& c, const ViewerStatus& s) {
     ImGui::EndDisabled();
     ImGui::SliderFloat("wall opacity", &c.wallOpacity, 0.1f, 1.0f, "%.2f");
     tooltip("Below 1 the wall is drawn see-through (0.1 to 1, no unit)");
+  }
+  if (s.hasBlood) {
+    const char* kinds[] = {"speed", "pressure", "origin"};
+    ImGui::Combo("blood colour", &c.bloodColour, kinds, 3);
+    tooltip("What the blood's colour shows: its speed (m/s), its pressure (Pa, from the density "
+            "solve), or where it started (inflow vessel, ventricle, or outside, through the loop)");
   }
   ImGui::TextUnformatted("view");
   ImGui::SameLine();
@@ -215,7 +236,13 @@ void drawColourKey(const ViewerStatus& status, float leftEdge, int windowHeight)
   }
   if (status.hasBlood) {
     if (status.hasHeart) ImGui::Spacing();
-    speedLegend(status.speedMax);
+    switch (render::BloodColour(status.bloodColour)) {
+      case render::BloodColour::Speed: scaleLegend("Blood speed (m/s)", status.speedMax, "m/s"); break;
+      case render::BloodColour::Pressure:
+        scaleLegend("Blood pressure (Pa, from the density solve)", status.pressureMax, "Pa");
+        break;
+      case render::BloodColour::Origin: originLegend(); break;
+    }
   }
   ImGui::End();
 }

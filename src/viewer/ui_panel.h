@@ -28,6 +28,7 @@ struct ViewerControls {
   bool clip = true;
   float clipZ = 0;  // m: what lies at z > clipZ is cut away
   float wallOpacity = 1;
+  int bloodColour = 0;  // render::BloodColour: speed, pressure, origin
   bool showHelp = false;
   RegionControls region;  // the beating region: bull's-eye, brush, Apply
   BloodControls blood;    // viscosity, particles, start, coupling, valves (restart)
@@ -56,6 +57,8 @@ struct ViewerStatus {
   bool physiological = false;       // cycle timing mode (heart rate applies)
   float heartSize = 1;              // m, the cavity's radius at the base: scales the beat's sliders
   double speedMax = 1;              // m/s at the top of the blood colour scale
+  double pressureMax = 1;           // Pa at the top of the pressure colour scale
+  int bloodColour = 0;              // what the blood's colour shows (render::BloodColour)
   float clipMin = -1, clipMax = 1;  // range of the clipping plane's slider (m)
   std::string message;              // last event: "saved viewer.png", "simulation became invalid ..."
   RegionStatus region;

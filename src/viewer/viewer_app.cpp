@@ -350,6 +350,8 @@ class ViewerApp {
     m_status.phase = sim.hasHeart() && scenario.cycle.enabled ? cardiac::phaseName(sim.lastPhase()) : "";
     m_status.cavity = sim.hasHeart() ? double(sim.cavityVolume()) : -1;
     m_status.speedMax = render::defaultSpeedScale(scenario);
+    m_status.pressureMax = render::defaultPressureScale(scenario);
+    m_status.bloodColour = m_controls.bloodColour;
     m_region.fillStatus(m_status.region, scenario.cycle.enabled);
     PumpStatus& pump = m_status.pump;
     const cardiac::Circulation* circulation = sim.circulation();
@@ -396,6 +398,7 @@ class ViewerApp {
     options.clipZ = m_controls.clipZ;
     options.wallOpacity = m_controls.wallOpacity;
     options.beating = m_region.highlight(m_controls.region);
+    options.bloodColour = render::BloodColour(std::clamp(m_controls.bloodColour, 0, 2));
     const render::Scene scene = exchange(wallSeconds, options);
 
     int w = 0, h = 0, fbw = 0, fbh = 0;

@@ -119,6 +119,49 @@ TEST(Scene, ParkedBloodIsNotDrawn) {
   EXPECT_EQ(hs::render::buildScene(sim, {}).particles.centres.size(), active);
 }
 
+// Blood coloured by where it started: the vessel start puts some in the inflow vessel and
+// the rest in the ventricle; blood beyond the start sites starts outside (not drawn).
+TEST(Scene, OriginColoursTellWhereTheBloodStarted) {
+  hs::cardiac::Scenario scenario;
+  scenario.cycle.enabled = false;
+  scenario.blood.enabled = true;
+  scenario.blood.start = hs::cardiac::BloodSettings::Start::Vessel;
+  scenario.blood.particles = 2000;
+  const hs::cardiac::HeartSimulation sim(scenario, 1);
+  hs::render::SceneOptions options;
+  options.bloodColour = hs::render::BloodColour::Origin;
+  const hs::render::Scene scene = hs::render::buildScene(sim, options);
+  const Vec3f inflow = hs::render::originColour(hs::cardiac::FlowRegion::InflowVessel);
+  const Vec3f ventricle = hs::render::originColour(hs::cardiac::FlowRegion::Ventricle);
+  std::size_t nInflow = 0, nVentricle = 0;
+  for (const Vec3f& c : scene.particles.colours) nInflow += c == inflow, nVentricle += c == ventricle;
+  EXPECT_GT(nInflow, 0u);
+  EXPECT_GT(nVentricle, 0u);
+  EXPECT_EQ(nInflow + nVentricle, scene.particles.colours.size());
+}
+
+// Blood coloured by pressure: resting blood under gravity is compressed at the bottom (top
+// colour with a tiny scale) and free at its surface (bottom colour).
+TEST(Scene, PressureColoursFollowTheDensitySolve) {
+  hs::cardiac::Scenario scenario;
+  scenario.cycle.enabled = false;
+  scenario.blood.enabled = true;
+  scenario.blood.start = hs::cardiac::BloodSettings::Start::Chamber;
+  scenario.blood.particles = 1000;
+  hs::cardiac::HeartSimulation sim(scenario, 1);
+  for (int k = 0; k < 100; ++k) sim.step();  // 0.5 s: the pool settles onto the apex
+  hs::render::SceneOptions options;
+  options.bloodColour = hs::render::BloodColour::Pressure;
+  options.pressureMax = 1e-6;  // any positive pressure is at the top of the scale
+  const hs::render::Scene scene = hs::render::buildScene(sim, options);
+  const Vec3f top = hs::render::speedColour(1), bottom = hs::render::speedColour(0);
+  std::size_t nTop = 0, nBottom = 0;
+  for (const Vec3f& c : scene.particles.colours) nTop += c == top, nBottom += c == bottom;
+  EXPECT_GT(nTop, 0u);
+  EXPECT_GT(nBottom, 0u);
+  EXPECT_GT(hs::render::defaultPressureScale(scenario), 0.0);
+}
+
 TEST(Scene, TheCutIsMadeOnlyInViewsThatLookAtIt) {
   hs::cardiac::Scenario scenario;
   const hs::cardiac::HeartSimulation sim(scenario, 1);
