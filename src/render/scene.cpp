@@ -130,7 +130,7 @@ double defaultPressureScale(const cardiac::Scenario& scenario) {
 Vec3f originColour(cardiac::FlowRegion origin) {
   switch (origin) {
     case cardiac::FlowRegion::InflowVessel: return Vec3f(0.15f, 0.35f, 0.95f);
-    case cardiac::FlowRegion::Ventricle: return Vec3f(0.98f, 0.6f, 0.1f);
+    case cardiac::FlowRegion::Ventricle: return Vec3f(0.75f, 0.35f, 0.95f);
     case cardiac::FlowRegion::Parked: return Vec3f(0.2f, 0.8f, 0.3f);
     default: return Vec3f(0.6f, 0.6f, 0.65f);
   }

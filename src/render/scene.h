@@ -52,7 +52,7 @@ double defaultSpeedScale(const cardiac::Scenario& scenario);
 // pressure over the same height as defaultSpeedScale (rho0 g H), rounded up the same way.
 // Systolic pressures above it are drawn at the top colour.
 double defaultPressureScale(const cardiac::Scenario& scenario);
-// Origin colours: blood that started in the inflow vessel (blue), in the ventricle (orange),
+// Origin colours: blood that started in the inflow vessel (blue), in the ventricle (violet),
 // or outside the model, entering through the loop (green).
 Vec3f originColour(cardiac::FlowRegion origin);
 

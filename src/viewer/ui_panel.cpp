@@ -239,7 +239,7 @@ void drawColourKey(const ViewerStatus& status, float leftEdge, int windowHeight)
     switch (render::BloodColour(status.bloodColour)) {
       case render::BloodColour::Speed: scaleLegend("Blood speed (m/s)", status.speedMax, "m/s"); break;
       case render::BloodColour::Pressure:
-        scaleLegend("Blood pressure (Pa, from the density solve)", status.pressureMax, "Pa");
+        scaleLegend("Blood pressure (Pa)", status.pressureMax, "Pa");
         break;
       case render::BloodColour::Origin: originLegend(); break;
     }
