@@ -8,13 +8,6 @@ constexpr double kLitresPerMinutePerM3PerSecond = 1e3 * 60;
 
 }  // namespace
 
-cardiac::ValveFlows stepFlows(const cardiac::Circulation& circulation) {
-  const cardiac::FlowStep& s = circulation.lastStep();
-  const double v = double(circulation.particleVolume());
-  return {double(s.mitralForward) * v, double(s.mitralBackward) * v, double(s.aorticForward) * v,
-          double(s.aorticBackward) * v};
-}
-
 void writeFlowHeader(std::ostream& csv) {
   csv << ",mitral_open,aortic_open,particles_inflow_vessel,particles_lv,particles_outflow_vessel,"
          "particles_returning,particles_outside,mitral_forward_ml,mitral_backward_ml,aortic_forward_ml,"
@@ -24,7 +17,7 @@ void writeFlowHeader(std::ostream& csv) {
 void writeFlowRow(std::ostream& csv, const cardiac::Circulation& circulation) {
   using cardiac::FlowRegion;
   const cardiac::FlowStep& s = circulation.lastStep();
-  const cardiac::ValveFlows f = stepFlows(circulation);
+  const cardiac::ValveFlows f = circulation.lastStepFlows();
   auto count = [&](FlowRegion r) { return s.count[std::size_t(r)]; };
   auto pressure = [&](FlowRegion r) { return s.pressure[std::size_t(r)]; };
   csv << ',' << int(s.valves.mitralOpen) << ',' << int(s.valves.aorticOpen) << ','

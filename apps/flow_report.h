@@ -10,9 +10,6 @@
 
 namespace hs::app {
 
-// Volumes through the orifices in the step just taken (m^3).
-cardiac::ValveFlows stepFlows(const cardiac::Circulation& circulation);
-
 void writeFlowHeader(std::ostream& csv);
 void writeFlowRow(std::ostream& csv, const cardiac::Circulation& circulation);
 

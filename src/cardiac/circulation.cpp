@@ -214,7 +214,7 @@ void Circulation::reenter(pbd::Particles& particles, Index first) {
     for (const Vec3& x : occupied) free = free && (x - site).squaredNorm() >= clear2;
     if (!free) continue;
     const Index b = m_queue.front();
-    m_queue.erase(m_queue.begin());
+    m_queue.pop_front();
     std::replace(m_lot.begin(), m_lot.end(), b, kFreeSlot);
     m_parked[b] = 0;
     const Index i = first + b;
@@ -281,6 +281,12 @@ void Circulation::endStep(pbd::Particles& particles, Index first, const std::vec
     reenter(particles, first);
   }
   m_last.count[std::size_t(FlowRegion::Parked)] = m_queue.size();
+}
+
+ValveFlows Circulation::lastStepFlows() const {
+  const double v = double(m_particleVolume);
+  return {double(m_last.mitralForward) * v, double(m_last.mitralBackward) * v, double(m_last.aorticForward) * v,
+          double(m_last.aorticBackward) * v};
 }
 
 void Circulation::permute(std::span<const Index> order) {

@@ -28,10 +28,12 @@
 // m / rho0 = spacing^3.
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <span>
 #include <vector>
 
 #include "cardiac/beat_clock.h"
+#include "cardiac/beat_metrics.h"
 #include "cardiac/lv_model.h"
 #include "cardiac/scenario.h"
 #include "pbd/particles.h"
@@ -110,6 +112,9 @@ class Circulation {
   void startWaiting(pbd::Particles& particles, Index first, std::size_t count);
 
   [[nodiscard]] const FlowStep& lastStep() const { return m_last; }
+  // Volumes through the two orifices in the step just taken (m^3): the crossing particles,
+  // each carrying m / rho0.
+  [[nodiscard]] ValveFlows lastStepFlows() const;
   [[nodiscard]] const ValveStates& valves() const { return m_valves; }
   // Particle i (a particle id) is parked outside the model, waiting to re-enter.
   [[nodiscard]] bool parked(Index particle) const;
@@ -146,7 +151,7 @@ class Circulation {
   FlowStep m_last;
   std::vector<Vec3> m_start;           // blood start-of-step positions (blood index)
   std::vector<std::uint8_t> m_parked;  // per blood index
-  std::vector<Index> m_queue;          // parked blood indices, first in first out
+  std::deque<Index> m_queue;           // parked blood indices, first in first out
 };
 
 }  // namespace hs::cardiac

@@ -203,10 +203,13 @@ bool ParticleTetCollider::pushOut(const std::vector<Vec3>& p, const std::vector<
   // surface, where the cavity meets the base plate): out through the nearest boundary face
   // again, as the static mesh collider repeats its contacts, until no tet holds the particle.
   if (changed) {
-    for (int round = 0; round < kSettleRounds && insideAnyTet(p, x); ++round)
+    bool inside = insideAnyTet(p, x);
+    for (int round = 0; round < kSettleRounds && inside; ++round) {
       x = nearestBoundaryExit(p, x, settings.radius, contact);
+      inside = insideAnyTet(p, x);
+    }
     // Last resort: back where the step started, if the solid does not hold that point.
-    if (insideAnyTet(p, x) && !insideAnyTet(p, previous)) x = previous;
+    if (inside && !insideAnyTet(p, previous)) x = previous;
   }
   return changed;
 }

@@ -2,13 +2,6 @@
 
 namespace hs::viewer {
 
-cardiac::ValveFlows stepFlows(const cardiac::Circulation& circulation) {
-  const cardiac::FlowStep& s = circulation.lastStep();
-  const double v = double(circulation.particleVolume());
-  return {double(s.mitralForward) * v, double(s.mitralBackward) * v, double(s.aorticForward) * v,
-          double(s.aorticBackward) * v};
-}
-
 VolumeScale volumeScaleFor(double cavityVolume) {
   if (cavityVolume < kThesisScaleVolume) return {};
   // Per minute as in the clinic, so that CO = SV x HR holds with HR in bpm.

@@ -11,11 +11,6 @@
 
 namespace hs::viewer {
 
-// Volumes through the two orifices in the step just taken (m^3): the particles that crossed
-// each disc, each carrying the volume m / rho0. The same figures as `heartsim run`'s
-// stepFlows (apps/flow_report.cpp), which lives in apps/ and so cannot be used here.
-cardiac::ValveFlows stepFlows(const cardiac::Circulation& circulation);
-
 // Display units. The thesis-scale models are metres across (cavity ~7 m^3): their volumes in
 // mL would read 7,000,000, so they are shown in m^3, and their pressures have no clinical
 // meaning, so no mmHg is given. A real heart's cavity is ~0.12 L.

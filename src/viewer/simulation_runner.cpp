@@ -124,7 +124,7 @@ void SimulationRunner::stepOnce() {
   if (sim.hasHeart()) {
     cavity = double(sim.cavityVolume());
     const cardiac::Circulation* circulation = sim.circulation();
-    const cardiac::ValveFlows flows = circulation ? stepFlows(*circulation) : cardiac::ValveFlows{};
+    const cardiac::ValveFlows flows = circulation ? circulation->lastStepFlows() : cardiac::ValveFlows{};
     s.pump->record(start, sim.lastPhase(), cavity, flows);
     PumpSample sample;
     sample.time = sim.time();
