@@ -141,25 +141,28 @@ layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec3 aColour;
 uniform mat4 uView, uProjection;
+uniform vec4 uClip;  // view space; the cut keeps dot(xyz, p) + w <= 0
+uniform bool uClipOn;
 out vec3 vViewPos, vNormal, vColour;
 void main() {
   vec4 p = uView * vec4(aPosition, 1.0);
   vViewPos = p.xyz;
   vNormal = mat3(uView) * aNormal;
   vColour = aColour;
+  // The cut as a clip distance: the rasteriser clips the triangles, so the fragment shader
+  // has no discard and a software rasteriser can test depth before shading (several wall
+  // layers overlap on screen; only the front one is shaded).
+  gl_ClipDistance[0] = uClipOn ? -(dot(uClip.xyz, p.xyz) + uClip.w) : 1.0;
   gl_Position = uProjection * p;
 }
 )";
 constexpr const char* kWallFs = R"(#version 330 core
 in vec3 vViewPos, vNormal, vColour;
-uniform vec4 uClip;  // view space; discard where dot(xyz, p) + w > 0
-uniform bool uClipOn;
 uniform float uOpacity;
 uniform vec3 uCutColour;
 out vec4 colour;
 vec3 shade(vec3 base, vec3 n, vec3 v);
 void main() {
-  if (uClipOn && dot(uClip.xyz, vViewPos) + uClip.w > 0.0) discard;
   vec3 v = normalize(-vViewPos);
   if (gl_FrontFacing) {
     colour = vec4(shade(vColour, normalize(vNormal), v), uOpacity);
@@ -414,6 +417,7 @@ void Renderer::draw(const Scene& scene, const Camera& camera, int width, int hei
     attribute(1, g.buffers[1]);
     attribute(2, g.buffers[2]);
     const auto count = GLsizei(wall.positions.size());
+    glEnable(GL_CLIP_DISTANCE0);
     if (wall.opacity >= 1) {
       glDrawArrays(GL_TRIANGLES, 0, count);
     } else {
@@ -431,6 +435,7 @@ void Renderer::draw(const Scene& scene, const Camera& camera, int width, int hei
       glDepthMask(GL_TRUE);
       glDisable(GL_BLEND);
     }
+    glDisable(GL_CLIP_DISTANCE0);
     for (GLuint i = 0; i < 3; ++i) glDisableVertexAttribArray(i);
   }
   glBindVertexArray(0);

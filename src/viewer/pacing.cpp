@@ -1,6 +1,7 @@
 #include "viewer/pacing.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace hs::viewer {
@@ -30,6 +31,23 @@ void PaceMeter::add(double wallSeconds, double simSeconds, bool dropped) {
   m_lastDropped = m_dropped;
   m_wall = m_sim = 0;
   m_dropped = false;
+}
+
+FrameTimeSummary summariseFrameTimes(const std::vector<double>& seconds, std::size_t skip) {
+  FrameTimeSummary summary;
+  if (seconds.size() <= skip) skip = 0;
+  std::vector<double> kept(seconds.begin() + std::ptrdiff_t(skip), seconds.end());
+  if (kept.empty()) return summary;
+  double sum = 0;
+  for (double s : kept) sum += s;
+  summary.frames = int(kept.size());
+  summary.meanMs = 1000 * sum / double(kept.size());
+  summary.fps = summary.meanMs > 0 ? 1000 / summary.meanMs : 0;
+  // Nearest rank: the smallest time at least 95% of the frames do not exceed.
+  const auto rank = std::size_t(std::ceil(0.95 * double(kept.size())));
+  std::nth_element(kept.begin(), kept.begin() + std::ptrdiff_t(rank - 1), kept.end());
+  summary.p95Ms = 1000 * kept[rank - 1];
+  return summary;
 }
 
 }  // namespace hs::viewer

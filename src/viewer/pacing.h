@@ -1,6 +1,10 @@
 #pragma once
 // Real-time pacing of the viewer's simulation thread: simulated time follows wall-clock time x
-// speed. Pure arithmetic on the times it is given, so it is unit-tested without a clock.
+// speed. Pure arithmetic on the times it is given, so it is unit-tested without a clock. Also
+// the frame-time summary of a scripted run.
+#include <cstddef>
+#include <vector>
+
 namespace hs::viewer {
 
 // The simulated time owed to wall-clock time. The simulation thread adds the wall time that
@@ -47,5 +51,22 @@ class PaceMeter {
   double m_factor = 1;
   bool m_lastDropped = false;
 };
+
+}  // namespace hs::viewer
+
+namespace hs::viewer {
+
+// What a scripted viewer run (--frames N) reports of its frame times: the mean, the frame rate
+// it gives, and the 95th percentile (a steady rate has it close to the mean).
+struct FrameTimeSummary {
+  int frames = 0;         // frames summarised
+  double meanMs = 0;      // mean frame time
+  double fps = 0;         // 1000 / meanMs
+  double p95Ms = 0;       // 95% of the frames took at most this long
+};
+
+// Frame times in seconds, in order; the first `skip` (start-up: the first frames compile
+// shaders and fill caches) are left out when there are more than that.
+FrameTimeSummary summariseFrameTimes(const std::vector<double>& seconds, std::size_t skip);
 
 }  // namespace hs::viewer

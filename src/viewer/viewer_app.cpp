@@ -14,12 +14,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "cardiac/heart_simulation.h"
 #include "io/scenario_file.h"
 #include "render/renderer.h"
 #include "render/scene.h"
 #include "viewer/camera_controller.h"
+#include "viewer/pacing.h"
 #include "viewer/plot_history.h"
 #include "viewer/region_editor.h"
 #include "viewer/simulation_runner.h"
@@ -73,10 +75,16 @@ class ViewerApp {
 
   void run() {
     m_lastFrame = Clock::now();
+    std::vector<double> frameSeconds;
     for (int frame = 0; !glfwWindowShouldClose(m_window.handle); ++frame) {
       const bool last = m_options.frames > 0 && frame + 1 >= m_options.frames;
+      const auto start = Clock::now();
       drawFrame(last && !m_options.screenshot.empty() ? m_options.screenshot : std::string());
-      if (last) return;
+      if (m_options.frames > 0) frameSeconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+      if (last) {
+        reportFrameTimes(frameSeconds);
+        return;
+      }
     }
     // Closed by the user: the last frame once more, for the screenshot.
     if (!m_options.screenshot.empty()) drawFrame(m_options.screenshot);
@@ -379,6 +387,14 @@ class ViewerApp {
       name = text;
     } while (std::filesystem::exists(name));
     return name;
+  }
+
+  // A scripted run's frame rate, for benchmarks (docs/performance.md): the first 10 frames
+  // (shader compilation, the first steps) are left out.
+  static void reportFrameTimes(const std::vector<double>& seconds) {
+    const FrameTimeSummary s = summariseFrameTimes(seconds, 10);
+    std::fprintf(stderr, "heartsim: %d frames: %.1f ms mean, %.1f fps, 95%% within %.1f ms\n", s.frames, s.meanMs,
+                 s.fps, s.p95Ms);
   }
 
   void drawFrame(const std::string& captureTo) {

@@ -68,5 +68,26 @@ TEST(ViewerPacing, MeterReportsThePaceOverHalfSecondWindows) {
   EXPECT_DOUBLE_EQ(meter.factor(), 1);
 }
 
+TEST(FrameTimeSummary, LeavesOutStartUpAndReportsMeanRateAndP95) {
+  // A slow first frame (shader compilation), then 19 frames of 25 ms and one of 50 ms.
+  std::vector<double> seconds{0.4};
+  for (int i = 0; i < 19; ++i) seconds.push_back(0.025);
+  seconds.push_back(0.050);
+  const FrameTimeSummary s = summariseFrameTimes(seconds, 1);
+  EXPECT_EQ(s.frames, 20);
+  EXPECT_NEAR(s.meanMs, (19 * 25.0 + 50.0) / 20, 1e-9);
+  EXPECT_NEAR(s.fps, 1000 / s.meanMs, 1e-9);
+  EXPECT_NEAR(s.p95Ms, 25.0, 1e-9);  // the 19th of 20 sorted times
+  seconds.push_back(0.050);            // two slow frames of 21: the 20th sorted is one of them
+  EXPECT_NEAR(summariseFrameTimes(seconds, 1).p95Ms, 50.0, 1e-9);
+}
+
+TEST(FrameTimeSummary, KeepsEverythingWhenThereIsNothingAfterStartUp) {
+  EXPECT_EQ(summariseFrameTimes({}, 1).frames, 0);
+  const FrameTimeSummary one = summariseFrameTimes({0.02}, 1);
+  EXPECT_EQ(one.frames, 1);
+  EXPECT_NEAR(one.fps, 50.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace hs::viewer
