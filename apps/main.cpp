@@ -57,6 +57,10 @@ int main(int argc, char** argv) {
   renderApp->add_option("--wall-opacity", render.wallOpacity, "Wall opacity in (0, 1]; below 1 the wall is see-through")
       ->capture_default_str();
   renderApp->add_option("--speed-max", render.speedMax, "Blood speed (m/s) at the top of the colour scale (0: from the scenario)");
+  renderApp->add_option("--blood-colour", render.bloodColour, "Colour the blood by speed, pressure or origin")
+      ->capture_default_str();
+  renderApp->add_option("--pressure-max", render.pressureMax,
+                        "Blood pressure (Pa) at the top of the pressure colour scale (0: from the scenario)");
   addThreadsOption(renderApp, render.threads);
   addSetOption(renderApp, render.overrides);
 

@@ -199,6 +199,10 @@ int renderCommand(const RenderOptions& options) {
       throw BadInput{"--wall-opacity: must be in (0, 1], got " + formatTime(options.wallOpacity)};
     if (!(options.speedMax >= 0) || !std::isfinite(options.speedMax))
       throw BadInput{"--speed-max: must be a finite speed >= 0 (m/s; 0 = from the scenario)"};
+    if (!(options.pressureMax >= 0) || !std::isfinite(options.pressureMax))
+      throw BadInput{"--pressure-max: must be a finite pressure >= 0 (Pa; 0 = from the scenario)"};
+    if (!render::parseBloodColour(options.bloodColour))
+      throw BadInput{"--blood-colour: unknown colour '" + options.bloodColour + "'; valid: speed, pressure, origin"};
     if (!std::isfinite(options.clipZ)) throw BadInput{"--clip-z: must be a finite position (m)"};
     prepareOutputDir(outDir);
   } catch (const BadInput& e) {
@@ -229,6 +233,10 @@ int renderCommand(const RenderOptions& options) {
   sceneOptions.clipZ = float(options.clipZ);
   sceneOptions.wallOpacity = float(options.wallOpacity);
   sceneOptions.speedMax = options.speedMax > 0 ? options.speedMax : render::defaultSpeedScale(scenario);
+  sceneOptions.bloodColour = *render::parseBloodColour(options.bloodColour);
+  sceneOptions.pressureMax = options.pressureMax > 0 ? options.pressureMax : render::defaultPressureScale(scenario);
+  const double scaleMax =
+      sceneOptions.bloodColour == render::BloodColour::Pressure ? sceneOptions.pressureMax : sceneOptions.speedMax;
   const float aspect = float(width) / float(height);
   const int shrinkFactor = std::max(1, (width + 399) / 400);
 
@@ -259,7 +267,7 @@ int renderCommand(const RenderOptions& options) {
         target->bind();
         renderer->draw(scene, render::viewCamera(view, scene.bounds, aspect), width, height);
         viz::Image image = target->read();
-        if (sim.hasBlood()) render::drawSpeedLegend(image, sceneOptions.speedMax);
+        if (sim.hasBlood()) render::drawBloodLegend(image, sceneOptions.bloodColour, scaleMax);
         const int textScale = std::max(1, std::min(width, height) / 300);
         image.drawText(6 * textScale, 6 * textScale, std::string(render::viewName(view)) + ", " + label, textScale,
                        {40, 40, 50});
@@ -275,9 +283,20 @@ int renderCommand(const RenderOptions& options) {
       footer += "wall: red = myocardium, orange = chosen beating region, light = base plate and vessels, "
                 "dark = cut face" +
                 std::string(sceneOptions.clip ? " (front view cut open at z = " + formatTime(options.clipZ) + " m)" : "");
-    if (sim.hasBlood())
-      footer += std::string(footer.empty() ? "" : "; ") + "blood coloured by speed, blue 0 to yellow " +
-                formatTime(sceneOptions.speedMax) + " m/s";
+    if (sim.hasBlood()) {
+      footer += footer.empty() ? "" : "; ";
+      switch (sceneOptions.bloodColour) {
+        case render::BloodColour::Speed:
+          footer += "blood coloured by speed, blue 0 to yellow " + formatTime(scaleMax) + " m/s";
+          break;
+        case render::BloodColour::Pressure:
+          footer += "blood coloured by pressure, blue 0 to yellow " + formatTime(scaleMax) + " Pa";
+          break;
+        case render::BloodColour::Origin:
+          footer += "blood coloured by where it started: blue inflow vessel, violet ventricle, green outside";
+          break;
+      }
+    }
     contactSheet(title, rowLabels, views, cells, footer).savePng((outDir / "contact_sheet.png").string());
   } catch (const std::runtime_error& e) {
     progress.finish();

@@ -20,6 +20,8 @@ struct RenderOptions {
   double clipZ = 0;                    // m
   double wallOpacity = 1;              // (0, 1]; < 1 draws a see-through wall
   double speedMax = 0;                 // m/s, top of the blood colour scale; 0: from the scenario
+  std::string bloodColour = "speed";   // speed, pressure or origin
+  double pressureMax = 0;              // Pa, top of the pressure colour scale; 0: from the scenario
   int threads = 0;                     // 0 = all cores
 };
 

@@ -209,31 +209,76 @@ void applyView(Scene& scene, const SceneOptions& options, View view) {
   scene.wall.opacity = options.clip && !facing && !scene.particles.centres.empty() ? std::min(opacity, 0.45f) : opacity;
 }
 
-void drawSpeedLegend(viz::Image& image, double speedMax) {
+const char* bloodColourName(BloodColour colour) {
+  switch (colour) {
+    case BloodColour::Speed: return "speed";
+    case BloodColour::Pressure: return "pressure";
+    case BloodColour::Origin: return "origin";
+  }
+  return "";
+}
+
+std::optional<BloodColour> parseBloodColour(std::string_view name) {
+  for (const BloodColour c : {BloodColour::Speed, BloodColour::Pressure, BloodColour::Origin})
+    if (name == bloodColourName(c)) return c;
+  return std::nullopt;
+}
+
+std::span<const OriginKeyRow> originKey() {
+  static constexpr OriginKeyRow kRows[] = {{cardiac::FlowRegion::InflowVessel, "in the inflow vessel"},
+                                           {cardiac::FlowRegion::Ventricle, "in the ventricle"},
+                                           {cardiac::FlowRegion::Parked, "outside: entered through the loop"}};
+  return kRows;
+}
+
+void drawBloodLegend(viz::Image& image, BloodColour colour, double scaleMax) {
   const int scale = std::max(1, std::min(image.width(), image.height()) / 300);
+  const int margin = 8 * scale, line = viz::Image::lineHeight(scale), capHalf = viz::Image::capHeight(scale) / 2;
+  const viz::Rgb ink{40, 40, 50};
+  if (colour == BloodColour::Origin) {
+    // Three swatches, one line each.
+    const std::string title = "blood by where it started";
+    const int swatch = viz::Image::capHeight(scale) + 2 * scale;
+    int width = viz::Image::textWidth(title, scale);
+    for (const OriginKeyRow& row : originKey())
+      width = std::max(width, swatch + 4 * scale + viz::Image::textWidth(row.label, scale));
+    const int rows = int(originKey().size());
+    const int boxWidth = width + 2 * margin, boxHeight = (rows + 1) * line + 2 * margin;
+    const int x0 = image.width() - boxWidth - margin, y0 = image.height() - boxHeight - margin;
+    image.fillRect({x0, y0, boxWidth, boxHeight}, {250, 250, 252});
+    image.strokeRect({x0, y0, boxWidth, boxHeight}, {150, 155, 165});
+    image.drawText(x0 + margin, y0 + margin, title, scale, ink);
+    int y = y0 + margin + line;
+    for (const OriginKeyRow& row : originKey()) {
+      image.fillRect({x0 + margin, y + capHalf - swatch / 2, swatch, swatch}, toRgb(originColour(row.origin)));
+      image.drawText(x0 + margin + swatch + 4 * scale, y, row.label, scale, ink);
+      y += line;
+    }
+    return;
+  }
+  // A bar from 0 (bottom) to scaleMax (top).
   const int barWidth = 18 * scale, barHeight = std::min(image.height() / 4, 90 * scale);
-  const int margin = 8 * scale;
   char top[32], mid[32];
-  std::snprintf(top, sizeof top, "%g", speedMax);
-  std::snprintf(mid, sizeof mid, "%g", speedMax / 2);
-  const std::string title = "blood speed (m/s)";
+  std::snprintf(top, sizeof top, "%g", scaleMax);
+  std::snprintf(mid, sizeof mid, "%g", scaleMax / 2);
+  const std::string title = colour == BloodColour::Pressure ? "blood pressure (Pa)" : "blood speed (m/s)";
   const int labelWidth = viz::Image::textWidth(top, scale) + 4 * scale;
   const int boxWidth = std::max(barWidth + labelWidth, viz::Image::textWidth(title, scale)) + 2 * margin;
-  const int boxHeight = barHeight + viz::Image::lineHeight(scale) + 3 * margin;
+  const int boxHeight = barHeight + line + 3 * margin;
   const int x0 = image.width() - boxWidth - margin, y0 = image.height() - boxHeight - margin;
   image.fillRect({x0, y0, boxWidth, boxHeight}, {250, 250, 252});
   image.strokeRect({x0, y0, boxWidth, boxHeight}, {150, 155, 165});
-  image.drawText(x0 + margin, y0 + margin, title, scale, {40, 40, 50});
-  const int barX = x0 + margin, barY = y0 + 2 * margin + viz::Image::lineHeight(scale);
+  image.drawText(x0 + margin, y0 + margin, title, scale, ink);
+  const int barX = x0 + margin, barY = y0 + 2 * margin + line;
   for (int row = 0; row < barHeight; ++row) {
     const viz::Rgb c = toRgb(speedColour(1.0 - double(row) / double(barHeight - 1)));
     image.fillRect({barX, barY + row, barWidth, 1}, c);
   }
   image.strokeRect({barX, barY, barWidth, barHeight}, {90, 90, 100});
-  const int textX = barX + barWidth + 4 * scale, capHalf = viz::Image::capHeight(scale) / 2;
-  image.drawText(textX, barY - capHalf, top, scale, {40, 40, 50});
-  image.drawText(textX, barY + barHeight / 2 - capHalf, mid, scale, {40, 40, 50});
-  image.drawText(textX, barY + barHeight - 1 - capHalf, "0", scale, {40, 40, 50});
+  const int textX = barX + barWidth + 4 * scale;
+  image.drawText(textX, barY - capHalf, top, scale, ink);
+  image.drawText(textX, barY + barHeight / 2 - capHalf, mid, scale, ink);
+  image.drawText(textX, barY + barHeight - 1 - capHalf, "0", scale, ink);
 }
 
 }  // namespace hs::render

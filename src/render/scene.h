@@ -4,6 +4,8 @@
 // speed, the container as a wireframe box, and the speed legend drawn into a finished image.
 #include <cstdint>
 #include <optional>
+#include <span>
+#include <string_view>
 #include <vector>
 
 #include "cardiac/heart_simulation.h"
@@ -68,8 +70,20 @@ Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& option
 // there is blood to see inside.
 void applyView(Scene& scene, const SceneOptions& options, View view);
 
-// The colour bar "blood speed (m/s)" from 0 to speedMax in the image's lower right corner,
-// text scaled with the image.
-void drawSpeedLegend(viz::Image& image, double speedMax);
+// What each blood colour mode is called ("speed", "pressure", "origin"), and back; nullopt
+// for an unknown name.
+const char* bloodColourName(BloodColour colour);
+std::optional<BloodColour> parseBloodColour(std::string_view name);
+
+// The origins a key lists, in order, with what each means.
+struct OriginKeyRow {
+  cardiac::FlowRegion origin;
+  const char* label;
+};
+std::span<const OriginKeyRow> originKey();
+
+// The blood's colour key in the image's lower right corner, text scaled with the image: a bar
+// "blood speed (m/s)" or "blood pressure (Pa)" from 0 to scaleMax, or the origin key.
+void drawBloodLegend(viz::Image& image, BloodColour colour, double scaleMax);
 
 }  // namespace hs::render

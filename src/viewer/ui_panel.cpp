@@ -53,15 +53,11 @@ void scaleLegend(const char* title, double speedMax, const char* unit) {
 // Blood coloured by where it started: one swatch per origin.
 void originLegend() {
   ImGui::TextUnformatted("Blood by where it started");
-  const std::pair<cardiac::FlowRegion, const char*> rows[] = {
-      {cardiac::FlowRegion::InflowVessel, "in the inflow vessel"},
-      {cardiac::FlowRegion::Ventricle, "in the ventricle"},
-      {cardiac::FlowRegion::Parked, "outside: entered through the loop"}};
-  for (const auto& [origin, text] : rows) {
-    const render::Vec3f c = render::originColour(origin);
+  for (const render::OriginKeyRow& row : render::originKey()) {
+    const render::Vec3f c = render::originColour(row.origin);
     ImGui::TextColored(ImVec4(c.x(), c.y(), c.z(), 1), "o");
     ImGui::SameLine();
-    ImGui::TextUnformatted(text);
+    ImGui::TextUnformatted(row.label);
   }
 }
 

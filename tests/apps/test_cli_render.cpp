@@ -95,6 +95,29 @@ TEST_F(CliRender, FluidAtRestShowsTheBlood) {
                bloodBlue, 320, 240);
 }
 
+// Origin colours (render/scene.h): violet for blood that started in the ventricle, blue in
+// the inflow vessel; the key names them.
+bool ventricleViolet(hs::viz::Rgb c) { return c.r > 110 && c.b > 150 && c.g + 50 < c.r && c.g + 50 < c.b; }
+
+TEST_F(CliRender, BloodColouredByOriginOrPressure) {
+  const auto dir = scratchDir("render_origin");
+  CliResult r = renderNoDisplay("normal --times 0 --views front --blood-colour origin --out O --size 320x240", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  expectImages(dir / "O", {"t0_front.png", "contact_sheet.png"}, ventricleViolet, 320, 240);
+  r = renderNoDisplay("normal --times 0.05 --views front --blood-colour pressure --pressure-max 2000 --out P --size 320x240",
+                      dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  // Blood at 0 Pa is the bar's blue; the ventricle's systolic pressure paints some of it toward yellow.
+  expectImages(dir / "P", {"t0.05_front.png"}, bloodBlue, 320, 240);
+  const hs::viz::Image image = hs::viz::Image::loadPng((dir / "P" / "t0.05_front.png").string());
+  EXPECT_GT(countPixels(image, [](hs::viz::Rgb c) { return c.g > 150 && c.r > 150 && c.b < 100; }), 50);
+}
+
+TEST_F(CliRender, UnknownBloodColourNamesTheValidOnes) {
+  expectBadInput("normal --times 0 --blood-colour density --out D", "--blood-colour: unknown colour 'density'; valid: speed, pressure, origin");
+  expectBadInput("normal --times 0 --pressure-max -1 --out D", "--pressure-max: must be a finite pressure >= 0");
+}
+
 TEST_F(CliRender, UnknownViewNamesTheValidOnes) {
   expectBadInput("heart-only --times 0 --views front,back --out D", "unknown view 'back'; valid views: front, left, right, top");
 }
