@@ -169,6 +169,7 @@ pbd::ParticleTetSettings HeartSimulation::wallContactSettings() const {
   contact.radius = m_scenario.blood.radius;
   contact.threads = m_threads;
   contact.twoWay = m_scenario.circulation.twoWay;
+  contact.slip = m_scenario.circulation.wallSlip;
   return contact;
 }
 

@@ -119,6 +119,7 @@ struct CirculationSettings {
   bool loop = true;               // blood leaving a vessel's far end re-enters the inflow vessel
   Real atrialPressureMmHg = 0;    // filling pressure driving the inflow vessel (mmHg)
   bool twoWay = false;            // blood pushes the wall back (two-way coupling)
+  bool wallSlip = false;          // blood slides along the wall (push-out along the face normal)
 };
 
 struct OutputSettings {

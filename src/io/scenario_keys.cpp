@@ -189,6 +189,9 @@ std::vector<KeySpec> buildKeyTable() {
               "mmHg", "Filling (atrial) pressure driving blood down the inflow vessel."),
       boolKey("circulation.two_way", HS_FIELD(circulation.twoWay),
               "Two-way coupling: blood pushes the wall back (off: the thesis's one-way push-out)."),
+      boolKey("circulation.wall_slip", HS_FIELD(circulation.wallSlip),
+              "Blood slides along the wall: pushed out of the face it entered through along that face's "
+              "normal (off: back along its path, thesis eq. 4.20)."),
       // [output]
       boolKey("output.vtk", HS_FIELD(output.vtk), "Write VTK frames for ParaView."),
       intKey("output.vtk_every", HS_FIELD(output.vtkEvery), 1, "steps", "Time steps between VTK frames."),

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "pbd/mesh_collider.h"
@@ -85,6 +86,25 @@ void ParticleTetCollider::setWettedVertices(const std::vector<std::uint8_t>& wet
   if (!kept.empty()) m_boundary.swap(kept);
 }
 
+namespace {
+
+// A boundary face's exit for p: the face's closest point q to p and p* = q + radius n, n the
+// face's outward unit normal; nullopt for a degenerate face.
+struct BoundaryExit {
+  Real distance2;  // |q - p|^2
+  Vec3 position;   // p*
+  Vec3 closest;    // q
+};
+std::optional<BoundaryExit> boundaryExit(const std::vector<Vec3>& x, const Triangle& f, const Vec3& p, Real radius) {
+  const Vec3 q = closestPointOnTriangle(p, x[f[0]], x[f[1]], x[f[2]]);
+  const Vec3 n = (x[f[1]] - x[f[0]]).cross(x[f[2]] - x[f[0]]);
+  const Real len = n.norm();
+  if (!(len > Real(0))) return std::nullopt;
+  return BoundaryExit{(q - p).squaredNorm(), q + (radius / len) * n, q};
+}
+
+}  // namespace
+
 // Last resort for a particle no tet-by-tet push could free: the closest point q of the
 // boundary surface, and p* = q + radius n with n that face's outward normal. Brute force over
 // the boundary: it runs only for such particles (none in the tests' LV runs). The wall point
@@ -94,18 +114,38 @@ Vec3 ParticleTetCollider::nearestBoundaryExit(const std::vector<Vec3>& x, const 
   Real best = std::numeric_limits<Real>::infinity();
   Vec3 result = p;
   for (const Triangle& f : m_boundary) {
-    const Vec3 q = closestPointOnTriangle(p, x[f[0]], x[f[1]], x[f[2]]);
-    const Real d2 = (q - p).squaredNorm();
-    if (!(d2 < best)) continue;
-    const Vec3 n = (x[f[1]] - x[f[0]]).cross(x[f[2]] - x[f[0]]);
-    const Real len = n.norm();
-    if (!(len > Real(0))) continue;
-    best = d2;
-    result = q + (radius / len) * n;
+    const std::optional<BoundaryExit> exit = boundaryExit(x, f, p, radius);
+    if (!exit || !(exit->distance2 < best)) continue;
+    best = exit->distance2;
+    result = exit->position;
     contact.vertices = f;
-    contact.weights = triangleWeights(q, x[f[0]], x[f[1]], x[f[2]]);
+    contact.weights = triangleWeights(exit->closest, x[f[0]], x[f[1]], x[f[2]]);
   }
   return result;
+}
+
+// Where the nearest exit lands in the solid again (a ridge between two lumens, where the
+// nearest faces of both sides hand the particle back and forth), the next nearest, and so on:
+// the exits in order of distance, the first that no tet holds. Brute force, and only for a
+// particle that the settle rounds left inside and whose start is inside too (the wall moved
+// onto it): a handful per second of a beating heart.
+Vec3 ParticleTetCollider::nearestFreeBoundaryExit(const std::vector<Vec3>& x, const Vec3& p, Real radius,
+                                                  WallContact& contact) const {
+  std::vector<std::pair<Real, std::size_t>> order;
+  order.reserve(m_boundary.size());
+  for (std::size_t k = 0; k < m_boundary.size(); ++k)
+    if (const std::optional<BoundaryExit> exit = boundaryExit(x, m_boundary[k], p, radius))
+      order.emplace_back(exit->distance2, k);
+  std::sort(order.begin(), order.end());  // by distance, then face index: deterministic
+  for (const auto& [distance2, k] : order) {
+    const Triangle& f = m_boundary[k];
+    const BoundaryExit exit = *boundaryExit(x, f, p, radius);
+    if (insideAnyTet(x, exit.position)) continue;
+    contact.vertices = f;
+    contact.weights = triangleWeights(exit.closest, x[f[0]], x[f[1]], x[f[2]]);
+    return exit.position;
+  }
+  return p;
 }
 
 void ParticleTetCollider::rebuild(const std::vector<Vec3>& positions, Real padding) {
@@ -157,11 +197,13 @@ bool ParticleTetCollider::pushOut(const std::vector<Vec3>& p, const std::vector<
   // solid, not into one of its inner tets.
   bool walking = false;
   Vec3 entry = Vec3::Zero(), ray = Vec3::Zero();
+  const Vec3 penetrated = x;  // where the particle was found, before any push (free slip)
+  int left = -1;  // while walking: the tet just left, which the point on its face is still in
   for (int pass = 0; pass < settings.maxPasses; ++pass) {
     // The lowest-numbered tet holding the particle (deterministic), then push out of it.
     int hit = -1;
     m_grid.forEachCandidate(x, [&](Index t) {
-      if (hit < 0 && isPointInTet(tetPoints(p, m_tets[t]), x, kBarycentricSlack)) hit = int(t);
+      if (hit < 0 && int(t) != left && isPointInTet(tetPoints(p, m_tets[t]), x, kBarycentricSlack)) hit = int(t);
     });
     if (hit < 0) break;
     const auto t = std::size_t(hit);
@@ -179,6 +221,7 @@ bool ParticleTetCollider::pushOut(const std::vector<Vec3>& p, const std::vector<
     if (out.face < 0) break;  // degenerate tet: nothing it can say
     changed = true;
     walking = false;
+    left = -1;
     x = out.position;
     const auto& face = kTetFaceVertices[std::size_t(out.face)];
     for (std::size_t k = 0; k < 3; ++k) contact.vertices[k] = m_tets[t][std::size_t(face[k])];
@@ -190,6 +233,17 @@ bool ParticleTetCollider::pushOut(const std::vector<Vec3>& p, const std::vector<
       entry = out.position + settings.radius * ray;
       x = entry - (Real(1e-3) * settings.radius) * ray;
       walking = true;
+      // A step of 1e-3 radii can stay within the shared face's slack, where the tet just left
+      // still holds the point and, being the lowest-numbered, would be found again.
+      left = hit;
+    } else if (settings.slip && (m_boundaryFaces[t] & (1u << out.face))) {
+      // Free slip: the boundary face the particle entered the solid through (found by the ray,
+      // or the nearest exit when the ray says nothing); the particle where it was found, p,
+      // leaves along the face's outward normal n to `radius` beyond its plane,
+      // p* = p + (n . (a - p) + radius) n (a a corner of the face), keeping the motion along it.
+      const Vec3 n = tetFaceNormal(now, out.face);
+      const Vec3& a = now[std::size_t(kTetFaceVertices[std::size_t(out.face)][0])];
+      x = penetrated + (n.dot(a - penetrated) + settings.radius) * n;
     }
     if (pass + 1 == settings.maxPasses) {
       x = nearestBoundaryExit(p, x, settings.radius, contact);
@@ -208,8 +262,9 @@ bool ParticleTetCollider::pushOut(const std::vector<Vec3>& p, const std::vector<
       x = nearestBoundaryExit(p, x, settings.radius, contact);
       inside = insideAnyTet(p, x);
     }
-    // Last resort: back where the step started, if the solid does not hold that point.
-    if (inside && !insideAnyTet(p, previous)) x = previous;
+    // Last resort: back where the step started, if the solid does not hold that point, else
+    // the nearest boundary exit the solid does not hold.
+    if (inside) x = !insideAnyTet(p, previous) ? previous : nearestFreeBoundaryExit(p, x, settings.radius, contact);
   }
   return changed;
 }

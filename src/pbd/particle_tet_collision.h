@@ -58,6 +58,12 @@ struct ParticleTetSettings {
   // resolve() only: the push-out is shared with the wall vertices by inverse mass (above).
   // false: only the particle moves (the wall as infinitely heavy), as before.
   bool twoWay = false;
+  // What the push-out keeps of the motion. false (thesis eq. 4.20): back along the ray to
+  // `radius` before the face it entered through, so the particle loses its motion along the
+  // wall too (it ends where it was a radius before reaching the wall). true (free slip): out
+  // of that same face (found by the ray) along the face's normal to `radius` beyond it, so
+  // only the motion into the wall is undone and blood slides along the wall; docs/heart-blood.md.
+  bool slip = false;
 };
 
 // The two-way split of one push-out (above): d = the particle's one-way displacement,
@@ -130,6 +136,9 @@ class ParticleTetCollider {
   bool insideAnyTet(const std::vector<Vec3>& p, const Vec3& x) const;
   Vec3 nearestBoundaryExit(const std::vector<Vec3>& x, const Vec3& p, Real radius,
                            WallContact& contact) const;
+  // The nearest of the boundary exits (as above) that no tet holds; p unchanged if none.
+  Vec3 nearestFreeBoundaryExit(const std::vector<Vec3>& x, const Vec3& p, Real radius,
+                               WallContact& contact) const;
 
   std::vector<Tet> m_tets;                // the solid's tets, vertex ids shifted to particle ids
   std::vector<std::uint8_t> m_boundaryFaces;  // boundary-face mask per tet (tet_geometry.h)

@@ -261,6 +261,7 @@ std::vector<KeyCase> everyKeyCase() {
       {"circulation.atrial_pressure_mmhg", "8",
        [](const Scenario& s) { return s.circulation.atrialPressureMmHg == Real(8); }},
       {"circulation.two_way", "true", [](const Scenario& s) { return s.circulation.twoWay; }},
+      {"circulation.wall_slip", "true", [](const Scenario& s) { return s.circulation.wallSlip; }},
       {"output.vtk", "true", [](const Scenario& s) { return s.output.vtk; }},
       {"output.vtk_every", "3", [](const Scenario& s) { return s.output.vtkEvery == 3; }},
   };

@@ -453,5 +453,41 @@ TEST(ParticleTetCollision, FastParticlesDoNotTunnelThroughAThinWall) {
   }
 }
 
+// Free slip (ParticleTetSettings::slip): a particle entering the cube's top face z = 1 at a
+// slant leaves along that face's normal to radius above it and keeps its motion along the
+// face; eq. 4.20 (the default) sends it back along its ray instead, undoing that motion too.
+TEST(ParticleTetCollision, SlipLeavesThroughTheEntryFaceKeepingTheMotionAlongIt) {
+  World w = world(0, 1, true);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> across(0.2, 0.8), slide(-0.15, 0.15), above(1.01, 1.1), depth(0.01, 0.1);
+  for (int k = 0; k < 400; ++k) {
+    const Vec3 from(Real(across(rng)), Real(across(rng)), Real(above(rng)));
+    const Index i = w.particles.add(from, 1, ParticleKind::Fluid);
+    w.particles.predicted[i] = from + Vec3(Real(slide(rng)), Real(slide(rng)), Real(1) - from.z() - Real(depth(rng)));
+  }
+  const std::vector<Vec3> penetrated = w.particles.predicted;
+  Particles ray = w.particles;
+  ParticleTetCollider collider(w.cube.tets, 0);
+  ParticleTetSettings s;
+  s.radius = Real(0.02);
+  s.slip = true;
+  ASSERT_EQ(collider.resolve(w.particles, w.firstFree, Index(w.particles.size()), s), 400u);
+  s.slip = false;
+  ASSERT_EQ(collider.resolve(ray, w.firstFree, Index(ray.size()), s), 400u);
+  double raySlide = 0;
+  for (Index i = w.firstFree; i < w.particles.size(); ++i) {
+    const Vec3& p = w.particles.predicted[i];
+    EXPECT_NEAR(p.z(), 1 + s.radius, 1e-5) << i;
+    EXPECT_NEAR(p.x(), penetrated[i].x(), 1e-5) << i;
+    EXPECT_NEAR(p.y(), penetrated[i].y(), 1e-5) << i;
+    ASSERT_FALSE(insideAnyTet(w, w.particles.predicted, p, 0)) << i;
+    // Along the ray: back toward where it started, so its sideways motion mostly undone.
+    const Vec3 along = penetrated[i] - w.particles.position[i];
+    const Vec3 back = ray.predicted[i] - w.particles.position[i];
+    raySlide += double(std::hypot(back.x(), back.y()) / std::max(std::hypot(along.x(), along.y()), Real(1e-6)));
+  }
+  EXPECT_LT(raySlide / 400, 0.5);  // eq. 4.20 keeps under half the sideways motion on average
+}
+
 }  // namespace
 }  // namespace hs::pbd
