@@ -9,9 +9,9 @@ scripts/install-deps.sh
 scripts/build.sh release heartsim
 if [ $# -eq 0 ]; then
   if [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; then
-    set -- view heart-only
+    set -- view normal
   else
-    set -- run heart-only --out results/heart-only
+    set -- run normal --out results/normal
   fi
 fi
 exec build/release/apps/heartsim "$@"
