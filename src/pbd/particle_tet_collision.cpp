@@ -263,8 +263,9 @@ bool ParticleTetCollider::pushOut(const std::vector<Vec3>& p, const std::vector<
       inside = insideAnyTet(p, x);
     }
     // Last resort: back where the step started, if the solid does not hold that point, else
-    // the nearest boundary exit the solid does not hold.
-    if (inside) x = !insideAnyTet(p, previous) ? previous : nearestFreeBoundaryExit(p, x, settings.radius, contact);
+    // the boundary exit nearest to where the particle was found that the solid does not hold.
+    if (inside)
+      x = !insideAnyTet(p, previous) ? previous : nearestFreeBoundaryExit(p, penetrated, settings.radius, contact);
   }
   return changed;
 }

@@ -489,5 +489,39 @@ TEST(ParticleTetCollision, SlipLeavesThroughTheEntryFaceKeepingTheMotionAlongIt)
   EXPECT_LT(raySlide / 400, 0.5);  // eq. 4.20 keeps under half the sideways motion on average
 }
 
+// Two cubes a gap narrower than a particle apart (a ridge between two lumens, in the LV): a
+// particle the solid moved onto (its start is inside too) near the face toward the gap cannot
+// leave through it, as a radius beyond that face lies in the other cube, and the nearest
+// exit from there leads back. It leaves through the next nearest face (the top) instead, and
+// ends outside every tet.
+TEST(ParticleTetCollision, ParticleCaughtAtANarrowGapTakesTheNearestFreeExit) {
+  const TetMesh cube = testing::makeBoxMesh(2, Real(0.5));
+  Particles particles;
+  std::vector<Tet> tets = cube.tets;
+  for (const Vec3& v : cube.vertices) particles.add(v, 0, ParticleKind::Tissue);
+  const Index shift = Index(cube.vertices.size());
+  const Real gap = Real(0.01);
+  for (const Vec3& v : cube.vertices) particles.add(v + Vec3(1 + gap, 0, 0), 0, ParticleKind::Tissue);
+  for (Tet t : cube.tets) {
+    for (Index& v : t) v += shift;
+    tets.push_back(t);
+  }
+  const Index i = particles.add(Vec3(Real(0.985), Real(0.95), Real(0.6)), 1, ParticleKind::Fluid);
+  particles.predicted[i] = Vec3(Real(0.99), Real(0.95), Real(0.6));
+  ParticleTetCollider collider(tets, 0);
+  ParticleTetSettings s;
+  s.radius = Real(0.02);
+  for (const bool slip : {false, true}) {
+    SCOPED_TRACE(slip ? "slip" : "ray");
+    Particles p = particles;
+    s.slip = slip;
+    ASSERT_EQ(collider.resolve(p, i, i + 1, s), 1u);
+    const Vec3& x = p.predicted[i];
+    for (const Tet& t : tets) ASSERT_FALSE(isPointInTet(tetPoints(p.predicted, t), x, Real(0))) << x.transpose();
+    EXPECT_NEAR(x.y(), 1 + s.radius, 1e-5) << x.transpose();  // out through the top
+    EXPECT_NEAR(x.x(), Real(0.99), 1e-5) << x.transpose();
+  }
+}
+
 }  // namespace
 }  // namespace hs::pbd
