@@ -166,6 +166,14 @@ void ParticleTetCollider::rebuild(const std::vector<Vec3>& positions, Real paddi
   // padded by a hair to keep such points among the candidates.
   TetGridSettings grid = m_grid.settings();
   grid.padding = padding;
+  // Cells of half a tet: the grid is built twice a step but asked once per particle per
+  // density iteration, and most of a query is the isPointInTet of each candidate. Halving the
+  // cell edge cuts the candidates of a cell at the wall (each tet enters up to 27 cells
+  // instead of 8): 3 s of `normal` on 1 thread step 139 -> 156 per second, the same state.
+  // (Keeping the grid for several steps, built with a skin the wall may move within, was
+  // slower: the apex moves half a millimetre a step in systole, and a wider skin means more
+  // candidates.)
+  grid.cellSizeFactor = Real(0.5);
   m_grid.setSettings(grid);
   m_grid.build(positions, m_tets);
 }
