@@ -328,9 +328,20 @@ int runCommand(const RunOptions& options) {
               << report["steps_per_s"].get<double>() << " steps/s, " << threads << " threads)";
     if (sim.hasHeart())
       std::cerr << "; EF " << beats.meanEjectionFraction() << " over " << beats.beats().size() << " beats";
+    if (const cardiac::BeatMeans m = beats.means(); m.count > 0) {
+      // The pump in clinical units (m^3 at the thesis's scale), as the means over the complete
+      // beats after the first.
+      const cardiac::VolumeScale u = cardiac::volumeScaleFor(m.edv);
+      char pump[200];
+      std::snprintf(pump, sizeof pump, "stroke volume %.3g %s, cardiac output %.3g %s, regurgitation %.2g %s",
+                    m.strokeVolume * u.volume, u.volumeUnit, m.cardiacOutput * u.output, u.outputUnit,
+                    m.regurgitantVolume * u.volume, u.volumeUnit);
+      std::cerr << "; " << pump;
+    }
     if (sim.hasBlood())
       std::cerr << "; " << report["blood"]["particles"].get<std::size_t>() << " blood particles, "
-                << report["blood"]["lost"].get<std::size_t>() << " lost, density error "
+                << report["blood"]["lost"].get<std::size_t>() << " lost, "
+                << report["blood"]["inside_wall"].get<std::size_t>() << " inside the wall, density error "
                 << report["blood"]["density_error_mean"].get<double>();
     std::cerr << "; results in " << outDir.string() << '\n';
   }

@@ -60,4 +60,10 @@ double BeatTracker::meanEjectionFraction() const {
   return sum / double(m_beats.size());
 }
 
+VolumeScale volumeScaleFor(double cavityVolume) {
+  if (cavityVolume < kThesisScaleVolume) return {};
+  // Per minute as in the clinic, so that CO = SV x HR holds with HR in bpm.
+  return {true, 1.0, "m^3", "m^3/s", 60.0, "m^3/min"};
+}
+
 }  // namespace hs::cardiac

@@ -45,6 +45,21 @@ struct BeatSummary {
   }
 };
 
+// Display units. The thesis-scale models are metres across (cavity ~7 m^3): their volumes in
+// mL would read 7,000,000, so they are shown in m^3, and their pressures have no clinical
+// meaning, so no mmHg is given. A real heart's cavity is ~0.12 L.
+struct VolumeScale {
+  bool thesis = false;
+  double volume = 1e6;               // m^3 -> shown volume unit
+  const char* volumeUnit = "mL";     // also per beat: EDV, ESV, SV, regurgitation
+  const char* flowUnit = "mL/s";     // valve flow rate
+  double output = 1e3 * 60;          // m^3/s -> shown cardiac output unit
+  const char* outputUnit = "L/min";  // cardiac output
+};
+// Cavity volumes of 10 L and more (no heart is that large) are thesis scale.
+inline constexpr double kThesisScaleVolume = 1e-2;  // m^3
+VolumeScale volumeScaleFor(double cavityVolume);
+
 // Means over the complete beats after the first (the first starts from the initial state):
 // the figures a run reports for the heart's pumping. count = 0 when there are none.
 struct BeatMeans {

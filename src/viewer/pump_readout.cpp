@@ -2,12 +2,6 @@
 
 namespace hs::viewer {
 
-VolumeScale volumeScaleFor(double cavityVolume) {
-  if (cavityVolume < kThesisScaleVolume) return {};
-  // Per minute as in the clinic, so that CO = SV x HR holds with HR in bpm.
-  return {true, 1.0, "m^3", "m^3/s", 60.0, "m^3/min"};
-}
-
 ClinicalFigures clinicalFigures(const cardiac::BeatSummary& beat, const VolumeScale& scale) {
   ClinicalFigures f;
   f.edv = beat.edv * scale.volume;
