@@ -135,6 +135,19 @@ TEST(CliHeartBlood, SameStateForOneAndTwoThreadsWithTwoWayCoupling) {
   EXPECT_EQ(hashes[0], hashes[1]);
 }
 
+// The same for `normal`: the real-size heart with free slip along the wall, its last-resort
+// exits and the closed loop, 0.3 s.
+TEST(CliHeartBlood, NormalGivesTheSameStateForOneAndTwoThreads) {
+  std::string hashes[2];
+  for (int threads = 1; threads <= 2; ++threads) {
+    const auto dir = scratchDir("normal_threads_" + std::to_string(threads));
+    const CliResult r = runHeartsim("run normal --duration 0.3 --json --threads " + std::to_string(threads), dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    hashes[threads - 1] = nlohmann::json::parse(r.out).at("state_hash").get<std::string>();
+  }
+  EXPECT_EQ(hashes[0], hashes[1]);
+}
+
 TEST(CliHeartBlood, VesselStartWithoutAHeartIsAOneLineError) {
   const auto dir = scratchDir("vessel_no_heart");
   const CliResult r =
