@@ -107,7 +107,7 @@ std::optional<BoundaryExit> boundaryExit(const std::vector<Vec3>& x, const Trian
 
 // Last resort for a particle no tet-by-tet push could free: the closest point q of the
 // boundary surface, and p* = q + radius n with n that face's outward normal. Brute force over
-// the boundary: it runs only for such particles (none in the tests' LV runs). The wall point
+// the boundary: it runs only for such particles (rare: corners and ridges). The wall point
 // pushed away from is q.
 Vec3 ParticleTetCollider::nearestBoundaryExit(const std::vector<Vec3>& x, const Vec3& p, Real radius,
                                               WallContact& contact) const {
