@@ -3,8 +3,11 @@
 namespace hs::app {
 namespace {
 
-constexpr double kMlPerM3 = 1e6;
-constexpr double kLitresPerMinutePerM3PerSecond = 1e3 * 60;
+// mL and L/min (cardiac::VolumeScale's clinical units), whatever the model's size: the keys
+// and columns say so.
+constexpr cardiac::VolumeScale kClinical{};
+constexpr double kMlPerM3 = kClinical.volume;
+constexpr double kLitresPerMinutePerM3PerSecond = kClinical.output;
 
 }  // namespace
 

@@ -232,11 +232,11 @@ int renderCommand(const RenderOptions& options) {
   sceneOptions.clip = options.clip.value_or(sim.hasHeart());
   sceneOptions.clipZ = float(options.clipZ);
   sceneOptions.wallOpacity = float(options.wallOpacity);
-  sceneOptions.speedMax = options.speedMax > 0 ? options.speedMax : render::defaultSpeedScale(scenario);
+  sceneOptions.speedMax = options.speedMax;
+  sceneOptions.pressureMax = options.pressureMax;
   sceneOptions.bloodColour = *render::parseBloodColour(options.bloodColour);
-  sceneOptions.pressureMax = options.pressureMax > 0 ? options.pressureMax : render::defaultPressureScale(scenario);
-  const double scaleMax =
-      sceneOptions.bloodColour == render::BloodColour::Pressure ? sceneOptions.pressureMax : sceneOptions.speedMax;
+  // One scale for every time and view of the sheet.
+  const double scaleMax = render::colourScaleMax(sceneOptions, scenario);
   const float aspect = float(width) / float(height);
   const int shrinkFactor = std::max(1, (width + 399) / 400);
 
@@ -293,7 +293,10 @@ int renderCommand(const RenderOptions& options) {
           footer += "blood coloured by pressure, blue 0 to yellow " + formatTime(scaleMax) + " Pa";
           break;
         case render::BloodColour::Origin:
-          footer += "blood coloured by where it started: blue inflow vessel, violet ventricle, green outside";
+          footer += "blood coloured by where it started:";
+          for (const render::OriginKeyRow& row : render::originKey())
+            footer += std::string(" ") + row.colourName + " " + row.label + ",";
+          footer.pop_back();
           break;
       }
     }

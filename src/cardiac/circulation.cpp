@@ -7,8 +7,6 @@
 namespace hs::cardiac {
 namespace {
 
-constexpr double kPascalPerMmHg = 133.322;
-
 Orifice orificeOf(const LvModel& model, const std::vector<Index>& ring, Real radius, const Vec3& forward) {
   Orifice o;
   Vec3 centroid = Vec3::Zero();
@@ -144,22 +142,20 @@ void Circulation::beginStep(pbd::Particles& particles, Index first, Phase phase,
   }
 }
 
+void Circulation::gate(const Vec3& x, Vec3& p) const {
+  if (!m_valves.mitralOpen) gateClosedOrifice(m_mitral, x, p, m_radius);
+  if (!m_valves.aorticOpen) gateClosedOrifice(m_aortic, x, p, m_radius);
+}
+
 void Circulation::gatePoints(const pbd::Particles& particles, std::vector<Vec3>& points,
                              std::span<const Index> ids) const {
   if (m_valves.mitralOpen && m_valves.aorticOpen) return;
-  for (std::size_t k = 0; k < ids.size(); ++k) {
-    const Vec3& x = particles.position[ids[k]];
-    if (!m_valves.mitralOpen) gateClosedOrifice(m_mitral, x, points[k], m_radius);
-    if (!m_valves.aorticOpen) gateClosedOrifice(m_aortic, x, points[k], m_radius);
-  }
+  for (std::size_t k = 0; k < ids.size(); ++k) gate(particles.position[ids[k]], points[k]);
 }
 
 void Circulation::gateParticles(pbd::Particles& particles, Index first) const {
   if (m_valves.mitralOpen && m_valves.aorticOpen) return;
-  for (std::size_t i = first; i < particles.size(); ++i) {
-    if (!m_valves.mitralOpen) gateClosedOrifice(m_mitral, particles.position[i], particles.predicted[i], m_radius);
-    if (!m_valves.aorticOpen) gateClosedOrifice(m_aortic, particles.position[i], particles.predicted[i], m_radius);
-  }
+  for (std::size_t i = first; i < particles.size(); ++i) gate(particles.position[i], particles.predicted[i]);
 }
 
 Vec3 Circulation::parkingSite(std::size_t k) const {

@@ -125,6 +125,8 @@ class Circulation {
   [[nodiscard]] const CirculationSettings& settings() const { return m_settings; }
 
  private:
+  // The closed valves' gates for a particle that started the step at x and is predicted at p.
+  void gate(const Vec3& x, Vec3& p) const;
   Vec3 parkingSite(std::size_t k) const;
   void park(pbd::Particles& particles, Index particle);
   void reenter(pbd::Particles& particles, Index first);

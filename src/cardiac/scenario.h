@@ -112,6 +112,9 @@ struct ContainerSettings {
   bool mesh = false;
 };
 
+// Pascal per millimetre of mercury: the scenario's pressures are in mmHg, the solver's in Pa.
+inline constexpr double kPascalPerMmHg = 133.322;
+
 // The blood's path through the heart (circulation.h): valves, filling pressure, closed loop.
 enum class ValveMode { Timing, Pressure, Open };
 struct CirculationSettings {

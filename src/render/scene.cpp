@@ -1,6 +1,7 @@
 #include "render/scene.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -141,6 +142,15 @@ double defaultSpeedScale(const cardiac::Scenario& scenario) {
   return roundUpNicely(std::sqrt(2 * g * fallHeight(scenario)));
 }
 
+double colourScaleMax(const SceneOptions& options, const cardiac::Scenario& scenario) {
+  switch (options.bloodColour) {
+    case BloodColour::Speed: return options.speedMax > 0 ? options.speedMax : defaultSpeedScale(scenario);
+    case BloodColour::Pressure: return options.pressureMax > 0 ? options.pressureMax : defaultPressureScale(scenario);
+    case BloodColour::Origin: return 0;
+  }
+  return 0;
+}
+
 Box sceneBounds(const cardiac::HeartSimulation& sim) {
   const auto& s = sim.scenario();
   Box box{Vec3f::Constant(INFINITY), Vec3f::Constant(-INFINITY)};
@@ -177,21 +187,20 @@ Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& option
   }
   if (s.container.enabled) scene.lines.points = boxEdges(toVec3f(s.container.min), toVec3f(s.container.max));
   if (sim.hasBlood()) {
-    const double speedMax = options.speedMax > 0 ? options.speedMax : defaultSpeedScale(s);
+    const double scaleMax = colourScaleMax(options, s);
     const auto& p = sim.particles();
     scene.particles.radius = float(s.blood.radius);
-    const double pressureMax = options.pressureMax > 0 ? options.pressureMax : defaultPressureScale(s);
     const std::vector<pbd::Real>& pressure = sim.pressures();
     for (std::size_t i = sim.firstBloodParticle(); i < p.size(); ++i) {
       if (!sim.bloodActive(pbd::Index(i))) continue;  // parked outside the model (circulation.h)
       scene.particles.centres.push_back(toVec3f(p.position[i]));
       switch (options.bloodColour) {
         case BloodColour::Speed:
-          scene.particles.colours.push_back(speedColour(double(p.velocity[i].norm()) / speedMax));
+          scene.particles.colours.push_back(speedColour(double(p.velocity[i].norm()) / scaleMax));
           break;
         case BloodColour::Pressure:
           scene.particles.colours.push_back(
-              speedColour(i < pressure.size() ? double(pressure[i]) / pressureMax : 0.0));
+              speedColour(i < pressure.size() ? double(pressure[i]) / scaleMax : 0.0));
           break;
         case BloodColour::Origin:
           scene.particles.colours.push_back(originColour(sim.bloodOrigin(pbd::Index(i))));
@@ -225,60 +234,78 @@ std::optional<BloodColour> parseBloodColour(std::string_view name) {
 }
 
 std::span<const OriginKeyRow> originKey() {
-  static constexpr OriginKeyRow kRows[] = {{cardiac::FlowRegion::InflowVessel, "in the inflow vessel"},
-                                           {cardiac::FlowRegion::Ventricle, "in the ventricle"},
-                                           {cardiac::FlowRegion::Parked, "outside: entered through the loop"}};
+  static constexpr OriginKeyRow kRows[] = {{cardiac::FlowRegion::InflowVessel, "in the inflow vessel", "blue"},
+                                           {cardiac::FlowRegion::Ventricle, "in the ventricle", "violet"},
+                                           {cardiac::FlowRegion::Parked, "outside: entered through the loop", "green"}};
   return kRows;
 }
 
-void drawBloodLegend(viz::Image& image, BloodColour colour, double scaleMax) {
-  const int scale = std::max(1, std::min(image.width(), image.height()) / 300);
-  const int margin = 8 * scale, line = viz::Image::lineHeight(scale), capHalf = viz::Image::capHeight(scale) / 2;
-  const viz::Rgb ink{40, 40, 50};
-  if (colour == BloodColour::Origin) {
-    // Three swatches, one line each.
-    const std::string title = "blood by where it started";
-    const int swatch = viz::Image::capHeight(scale) + 2 * scale;
-    int width = viz::Image::textWidth(title, scale);
-    for (const OriginKeyRow& row : originKey())
-      width = std::max(width, swatch + 4 * scale + viz::Image::textWidth(row.label, scale));
-    const int rows = int(originKey().size());
-    const int boxWidth = width + 2 * margin, boxHeight = (rows + 1) * line + 2 * margin;
-    const int x0 = image.width() - boxWidth - margin, y0 = image.height() - boxHeight - margin;
-    image.fillRect({x0, y0, boxWidth, boxHeight}, {250, 250, 252});
-    image.strokeRect({x0, y0, boxWidth, boxHeight}, {150, 155, 165});
-    image.drawText(x0 + margin, y0 + margin, title, scale, ink);
-    int y = y0 + margin + line;
-    for (const OriginKeyRow& row : originKey()) {
-      image.fillRect({x0 + margin, y + capHalf - swatch / 2, swatch, swatch}, toRgb(originColour(row.origin)));
-      image.drawText(x0 + margin + swatch + 4 * scale, y, row.label, scale, ink);
-      y += line;
-    }
-    return;
+namespace {
+
+// A key's frame in the image's lower right corner, text scaled with the image: a pale box of
+// the given content size plus margins, with its title; returns the content's top left.
+struct KeyLayout {
+  int scale, margin, line, capHalf;
+  explicit KeyLayout(const viz::Image& image)
+      : scale(std::max(1, std::min(image.width(), image.height()) / 300)),
+        margin(8 * scale),
+        line(viz::Image::lineHeight(scale)),
+        capHalf(viz::Image::capHeight(scale) / 2) {}
+};
+constexpr viz::Rgb kInk{40, 40, 50};
+
+std::array<int, 2> drawKeyBox(viz::Image& image, const KeyLayout& k, const std::string& title, int contentWidth,
+                              int contentHeight) {
+  const int boxWidth = std::max(contentWidth, viz::Image::textWidth(title, k.scale)) + 2 * k.margin;
+  const int boxHeight = k.line + contentHeight + 2 * k.margin;
+  const int x0 = image.width() - boxWidth - k.margin, y0 = image.height() - boxHeight - k.margin;
+  image.fillRect({x0, y0, boxWidth, boxHeight}, {250, 250, 252});
+  image.strokeRect({x0, y0, boxWidth, boxHeight}, {150, 155, 165});
+  image.drawText(x0 + k.margin, y0 + k.margin, title, k.scale, kInk);
+  return {x0 + k.margin, y0 + k.margin + k.line};
+}
+
+// One swatch and label per origin, one line each.
+void drawOriginKey(viz::Image& image, const KeyLayout& k) {
+  const int swatch = viz::Image::capHeight(k.scale) + 2 * k.scale, gap = 4 * k.scale;
+  int width = 0;
+  for (const OriginKeyRow& row : originKey())
+    width = std::max(width, swatch + gap + viz::Image::textWidth(row.label, k.scale));
+  auto [x, y] = drawKeyBox(image, k, "blood by where it started", width, int(originKey().size()) * k.line);
+  for (const OriginKeyRow& row : originKey()) {
+    image.fillRect({x, y + k.capHalf - swatch / 2, swatch, swatch}, toRgb(originColour(row.origin)));
+    image.drawText(x + swatch + gap, y, row.label, k.scale, kInk);
+    y += k.line;
   }
-  // A bar from 0 (bottom) to scaleMax (top).
-  const int barWidth = 18 * scale, barHeight = std::min(image.height() / 4, 90 * scale);
+}
+
+// The colour bar from 0 (bottom) to scaleMax (top), labelled at both ends and the middle.
+void drawScaleBar(viz::Image& image, const KeyLayout& k, const std::string& title, double scaleMax) {
+  const int barWidth = 18 * k.scale, barHeight = std::min(image.height() / 4, 90 * k.scale);
   char top[32], mid[32];
   std::snprintf(top, sizeof top, "%g", scaleMax);
   std::snprintf(mid, sizeof mid, "%g", scaleMax / 2);
-  const std::string title = colour == BloodColour::Pressure ? "blood pressure (Pa)" : "blood speed (m/s)";
-  const int labelWidth = viz::Image::textWidth(top, scale) + 4 * scale;
-  const int boxWidth = std::max(barWidth + labelWidth, viz::Image::textWidth(title, scale)) + 2 * margin;
-  const int boxHeight = barHeight + line + 3 * margin;
-  const int x0 = image.width() - boxWidth - margin, y0 = image.height() - boxHeight - margin;
-  image.fillRect({x0, y0, boxWidth, boxHeight}, {250, 250, 252});
-  image.strokeRect({x0, y0, boxWidth, boxHeight}, {150, 155, 165});
-  image.drawText(x0 + margin, y0 + margin, title, scale, ink);
-  const int barX = x0 + margin, barY = y0 + 2 * margin + line;
-  for (int row = 0; row < barHeight; ++row) {
-    const viz::Rgb c = toRgb(speedColour(1.0 - double(row) / double(barHeight - 1)));
-    image.fillRect({barX, barY + row, barWidth, 1}, c);
-  }
+  const int labelWidth = viz::Image::textWidth(top, k.scale) + 4 * k.scale;
+  const auto [barX, titleEnd] = drawKeyBox(image, k, title, barWidth + labelWidth, barHeight + k.margin);
+  const int barY = titleEnd + k.margin;
+  for (int row = 0; row < barHeight; ++row)
+    image.fillRect({barX, barY + row, barWidth, 1}, toRgb(speedColour(1.0 - double(row) / double(barHeight - 1))));
   image.strokeRect({barX, barY, barWidth, barHeight}, {90, 90, 100});
-  const int textX = barX + barWidth + 4 * scale;
-  image.drawText(textX, barY - capHalf, top, scale, ink);
-  image.drawText(textX, barY + barHeight / 2 - capHalf, mid, scale, ink);
-  image.drawText(textX, barY + barHeight - 1 - capHalf, "0", scale, ink);
+  const int textX = barX + barWidth + 4 * k.scale;
+  image.drawText(textX, barY - k.capHalf, top, k.scale, kInk);
+  image.drawText(textX, barY + barHeight / 2 - k.capHalf, mid, k.scale, kInk);
+  image.drawText(textX, barY + barHeight - 1 - k.capHalf, "0", k.scale, kInk);
+}
+
+}  // namespace
+
+void drawBloodLegend(viz::Image& image, BloodColour colour, double scaleMax) {
+  const KeyLayout k(image);
+  switch (colour) {
+    case BloodColour::Speed: drawScaleBar(image, k, "blood speed (m/s)", scaleMax); break;
+    case BloodColour::Pressure: drawScaleBar(image, k, "blood pressure (Pa)", scaleMax); break;
+    case BloodColour::Origin: drawOriginKey(image, k); break;
+  }
 }
 
 }  // namespace hs::render

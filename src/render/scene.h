@@ -58,6 +58,10 @@ double defaultPressureScale(const cardiac::Scenario& scenario);
 // or outside the model, entering through the loop (green).
 Vec3f originColour(cardiac::FlowRegion origin);
 
+// The top of the blood's colour scale for options.bloodColour: speedMax (m/s) or pressureMax
+// (Pa), or the scenario's default where it is 0; 0 for origin colours, which have no scale.
+double colourScaleMax(const SceneOptions& options, const cardiac::Scenario& scenario);
+
 // What the cameras frame: the wall's rest shape (so every time is seen from the same place)
 // and the container, or the blood's start block when there is neither.
 Box sceneBounds(const cardiac::HeartSimulation& sim);
@@ -79,6 +83,7 @@ std::optional<BloodColour> parseBloodColour(std::string_view name);
 struct OriginKeyRow {
   cardiac::FlowRegion origin;
   const char* label;
+  const char* colourName;  // originColour's, in words
 };
 std::span<const OriginKeyRow> originKey();
 

@@ -15,8 +15,7 @@ namespace hs::viewer {
 using cardiac::kThesisScaleVolume;
 using cardiac::VolumeScale;
 using cardiac::volumeScaleFor;
-
-inline constexpr double kPascalPerMmHg = 133.322;
+using cardiac::kPascalPerMmHg;
 
 // One beat's figures in display units (volumeScale), heart rate from the beat's length.
 struct ClinicalFigures {
