@@ -19,8 +19,8 @@ void writeFlowHeader(std::ostream& csv) {
 
 void writeFlowRow(std::ostream& csv, const cardiac::Circulation& circulation) {
   using cardiac::FlowRegion;
-  const cardiac::FlowStep& s = circulation.lastStep();
-  const cardiac::ValveFlows f = circulation.lastStepFlows();
+  const cardiac::FlowStep& s = circulation.meter.lastStep();
+  const cardiac::ValveFlows f = circulation.meter.lastStepFlows();
   auto count = [&](FlowRegion r) { return s.count[std::size_t(r)]; };
   auto pressure = [&](FlowRegion r) { return s.pressure[std::size_t(r)]; };
   csv << ',' << int(s.valves.mitralOpen) << ',' << int(s.valves.aorticOpen) << ','

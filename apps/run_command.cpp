@@ -247,7 +247,7 @@ int runCommand(const RunOptions& options) {
         stats.cavityMin = std::min(stats.cavityMin, cavity);
         stats.cavityMax = std::max(stats.cavityMax, cavity);
         beats.record(startTime, sim.lastPhase(), cavity,
-                     sim.circulation() ? sim.circulation()->lastStepFlows() : cardiac::ValveFlows{});
+                     sim.circulation() ? sim.circulation()->meter.lastStepFlows() : cardiac::ValveFlows{});
         csv << ',' << cavity << ',' << cavity * 1e6 << ',' << tissue.volumeErrorMean << ','
             << tissue.volumeErrorMax << ',' << tissue.invertedTets << ',' << sim.restDeviationRelative();
       }

@@ -78,8 +78,8 @@ void BM_SoftBodyStep(benchmark::State& state) {
     if (particles.position[i].y() == Real(0)) particles.inverseMass[i] = 0;
   finalizeConstraints(constraints, particles.position);
   SolverSettings settings;
-  settings.threads = threads;
-  for (auto _ : state) step(constraints, particles, settings);
+  const StepContext context = makeStepContext(Real(0.005), Vec3(0, Real(-9.81), 0), threads);
+  for (auto _ : state) step(constraints, particles, settings, context);
   state.counters["tets"] = double(mesh.tets.size());
   state.counters["tets_per_s"] = benchmark::Counter(double(mesh.tets.size()) * settings.iterations,
                                                     benchmark::Counter::kIsIterationInvariantRate);

@@ -23,43 +23,53 @@ double smoothRamp(double s) {
 }
 }  // namespace
 
-BeatClock::BeatClock(const BeatClockSettings& settings, Real dt)
-    : m_settings(settings), m_dt(dt), m_random(settings.seed) {
-  if (settings.physiological) {
-    const double systole = double(settings.period) * double(settings.systolicFraction);
-    m_systoleLength = std::max(1, int(std::lround(systole / double(dt))));
-    m_diastoleLength =
-        std::max(1, int(std::lround(double(settings.period) / double(dt))) - m_systoleLength);
-  } else {
-    m_systoleLength = std::max(1, settings.systoleSteps);
-    m_diastoleLength = std::max(1, settings.diastoleSteps);
+BeatClock::BeatClock(const BeatClockSettings& settings) : m_settings(settings), m_random(settings.seed) {
+  if (settings.startDelay > 0) {
+    m_phase = Phase::Diastole;
+    m_delayed = true;
   }
-  m_nominalDiastoleLength = m_diastoleLength;
 }
 
-Real BeatClock::advance() {
+BeatClock::Lengths BeatClock::lengths(Real dt) const {
+  if (!m_settings.physiological) return {std::max(1, m_settings.systoleSteps), std::max(1, m_settings.diastoleSteps)};
+  const double systole = double(m_settings.period) * double(m_settings.systolicFraction);
+  const int systoleSteps = std::max(1, int(std::lround(systole / double(dt))));
+  return {systoleSteps, std::max(1, int(std::lround(double(m_settings.period) / double(dt))) - systoleSteps)};
+}
+
+int BeatClock::diastoleLength(Real dt) const {
+  const Lengths regular = lengths(dt);
+  if (m_delayed) {
+    // The start delay, a share of one whole cycle.
+    const double cycle = m_settings.physiological ? double(m_settings.period) / double(dt)
+                                                  : double(regular.systole + regular.diastole);
+    return int(std::lround(cycle * double(m_settings.startDelay)));
+  }
+  if (m_diastoleShare == 1) return regular.diastole;
+  return std::max(1, int(std::lround(regular.diastole * m_diastoleShare)));
+}
+
+Real BeatClock::advance(Real dt) {
   if (m_phase == Phase::Rest) return 0;
+  if (m_delayed && m_steps == 0 && diastoleLength(dt) <= 0) {  // a delay shorter than half a step
+    m_delayed = false;
+    m_phase = Phase::Systole;
+  }
+  const int systoleLength = lengths(dt).systole;
   const Real displacement = m_phase != Phase::Systole ? Real(0)
-                            : m_settings.physiological ? physiologicalDisplacement()
+                            : m_settings.physiological ? physiologicalDisplacement(systoleLength)
                                                        : m_settings.displacePerStep;
   // Algorithm 2, lines 8-11 (steps++, switch when steps >= BEATING_DURATION), and Fig. 4.6's
   // switch out of diastole.
   ++m_steps;
-  if (m_phase == Phase::Systole && m_steps >= m_systoleLength) enterDiastole();
-  else if (m_phase == Phase::Diastole && m_steps >= m_diastoleLength) endDiastole();
+  if (m_phase == Phase::Systole && m_steps >= systoleLength) enterDiastole();
+  else if (m_phase == Phase::Diastole && m_steps >= diastoleLength(dt)) endDiastole();
   return displacement;
 }
 
-void BeatClock::delayStart(int steps) {
-  if (steps <= 0) return;
-  m_phase = Phase::Diastole;
-  m_steps = 0;
-  m_diastoleLength = steps;
-}
-
 // The travel reached at the end of this systolic step, and the increment over the step.
-Real BeatClock::physiologicalDisplacement() {
-  const double n = m_systoleLength;
+Real BeatClock::physiologicalDisplacement(int systoleLength) {
+  const double n = systoleLength;
   const double contraction = m_settings.contraction;
   m_travel = Real(contraction * smoothRamp((m_steps + 1) / n));
   return Real(contraction * (smoothRamp((m_steps + 1) / n) - smoothRamp(m_steps / n)));
@@ -70,17 +80,16 @@ void BeatClock::enterDiastole() {
   ++m_systolesCompleted;
   m_phase = Phase::Diastole;
   // Irregular beating: the next contraction comes early, before the wall has relaxed.
+  m_diastoleShare = 1;
   if (m_settings.irregularity > 0) {
     std::uniform_real_distribution<double> share(0.0, double(m_settings.irregularity));
-    const double cut = share(m_random);
-    m_diastoleLength = std::max(1, int(std::lround(m_nominalDiastoleLength * (1.0 - cut))));
-  } else {
-    m_diastoleLength = m_nominalDiastoleLength;
+    m_diastoleShare = 1.0 - share(m_random);
   }
 }
 
 void BeatClock::endDiastole() {
   m_steps = 0;
+  m_delayed = false;
   const bool limitReached = m_settings.beats > 0 && m_systolesCompleted >= m_settings.beats;
   m_phase = limitReached ? Phase::Rest : Phase::Systole;
 }

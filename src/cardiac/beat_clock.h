@@ -36,40 +36,44 @@ struct BeatClockSettings {
   int beats = 0;          // systoles to perform, then rest; 0 = no limit
   Real irregularity = 0;  // each diastole shortened by a random share in [0, irregularity)
   unsigned seed = 1;
+  // Phase offset: the first systole starts after this share of one cycle (systole plus
+  // diastole) spent relaxed.
+  Real startDelay = 0;
 };
 
+// The clock counts steps; in physiological mode the lengths in steps follow from the time
+// step of each call (the step context's), so the clock stores no time step of its own.
 class BeatClock {
  public:
-  BeatClock(const BeatClockSettings& settings, Real dt);
+  explicit BeatClock(const BeatClockSettings& settings);
 
-  // Advances one step; returns the inward displacement (m) to apply during this step.
-  Real advance();
+  // Advances one step of dt seconds; returns the inward displacement (m) to apply during it.
+  Real advance(Real dt);
   // Physiological mode: inward travel (m) since the current systole began, after the last
   // advance() (the full contraction once systole is over).
   [[nodiscard]] Real travel() const { return m_travel; }
   [[nodiscard]] bool physiological() const { return m_settings.physiological; }
-  // Phase offset: the first systole starts only after `steps` relaxed steps.
-  void delayStart(int steps);
-
   [[nodiscard]] Phase phase() const { return m_phase; }
   [[nodiscard]] int stepsInPhase() const { return m_steps; }
   [[nodiscard]] int systolesCompleted() const { return m_systolesCompleted; }
-  // Length (steps) of the diastole in progress or to come.
-  [[nodiscard]] int diastoleLength() const { return m_diastoleLength; }
+  // Length (steps of dt) of the diastole in progress or to come.
+  [[nodiscard]] int diastoleLength(Real dt) const;
 
  private:
-  Real physiologicalDisplacement();
+  struct Lengths {
+    int systole = 0, diastole = 0;  // steps of a regular beat
+  };
+  [[nodiscard]] Lengths lengths(Real dt) const;
+  Real physiologicalDisplacement(int systoleLength);
   void enterDiastole();
   void endDiastole();
 
   BeatClockSettings m_settings;
-  Real m_dt;
   Phase m_phase = Phase::Systole;
   int m_steps = 0;  // steps spent in the current phase
   int m_systolesCompleted = 0;
-  int m_systoleLength = 0;  // steps
-  int m_diastoleLength = 0;
-  int m_nominalDiastoleLength = 0;
+  bool m_delayed = false;   // in the start delay (a diastole of startDelay cycles)
+  double m_diastoleShare = 1;  // this diastole's share of the regular one (irregular beating)
   Real m_travel = 0;
   std::mt19937 m_random;
 };

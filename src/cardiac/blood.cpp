@@ -110,12 +110,10 @@ pbd::FluidSettings bloodFluidSettings(const BloodSettings& b) {
   return f;
 }
 
-pbd::FluidStepSettings bloodSolverSettings(const Scenario& scenario, int threads) {
+pbd::FluidStepSettings bloodSolverSettings(const Scenario& scenario) {
   const BloodSettings& b = scenario.blood;
   pbd::FluidStepSettings s;
-  s.base.dt = scenario.simulation.dt;
-  s.base.gravity = scenario.simulation.gravity;
-  s.base.threads = threads;
+  const Real dt = scenario.simulation.dt;
   s.iterations = b.iterations;
   s.fluid = bloodFluidSettings(b);
   const pbd::FluidSettings& f = s.fluid;
@@ -128,9 +126,9 @@ pbd::FluidStepSettings bloodSolverSettings(const Scenario& scenario, int threads
   // Explicit viscosity is stable for dt <= 0.125 h^2 / nu (Monaghan 2005, section 6.3).
   const double nu = double(f.kinematicViscosity);
   const double limit = 0.125 * double(b.supportRadius) * double(b.supportRadius) / std::max(nu, 1e-300);
-  if (nu > 0 && double(s.base.dt) > limit)
+  if (nu > 0 && double(dt) > limit)
     throw std::invalid_argument("blood.viscosity: " + str(b.viscosity) + " Pa s is too viscous for simulation.dt = " +
-                                str(s.base.dt) + " s at support radius " + str(b.supportRadius) +
+                                str(dt) + " s at support radius " + str(b.supportRadius) +
                                 " m; expected dt <= 0.125 h^2 rho0 / mu = " + str(limit) + " s");
   if (b.particleCollision && 2 * b.radius > b.spacing * Real(1.0001))
     throw std::invalid_argument("blood.radius: with particle_collision, two radii (" + str(2 * b.radius) +
@@ -223,8 +221,8 @@ BloodStats measureBlood(const Scenario& scenario, const pbd::Particles& particle
   stats.meanNeighbours = double(f.meanNeighbours);
   for (std::size_t i = 0; i < particles.size(); ++i) {
     if (particles.kind[i] != pbd::ParticleKind::Fluid) continue;
-    // Pinned blood is parked outside the model, waiting to re-enter (circulation.h): not lost.
-    if (particles.inverseMass[i] == Real(0)) continue;
+    // Parked blood waits outside the model to re-enter (blood_loop.h): not lost.
+    if (!particles.active(i)) continue;
     const Vec3& x = particles.position[i];
     bool out = !x.allFinite() || !particles.velocity[i].allFinite();
     for (int a = 0; a < 3 && !out; ++a) out = x[a] < domainMin[a] || x[a] > domainMax[a];

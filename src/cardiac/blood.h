@@ -7,7 +7,9 @@
 
 #include "cardiac/lv_model.h"
 #include "cardiac/scenario.h"
+#include "pbd/fluid_setup.h"
 #include "pbd/fluid_solver.h"
+#include "pbd/fluid_stats.h"
 #include "pbd/particles.h"
 
 namespace hs::cardiac {
@@ -25,7 +27,7 @@ pbd::FluidSettings bloodFluidSettings(const BloodSettings& blood);
 //   walls = the container's six planes when it has plane walls.
 // Throws std::invalid_argument, naming the key, for combinations the solver cannot run
 // (viscosity too large for dt, particles that would overlap at rest).
-pbd::FluidStepSettings bloodSolverSettings(const Scenario& scenario, int threads);
+pbd::FluidStepSettings bloodSolverSettings(const Scenario& scenario);
 
 // Start positions: the lattice sites of [blood.block_min, blood.block_max] at blood.spacing,
 // all of them (blood.particles = 0) or the first blood.particles sites, lowest y first.

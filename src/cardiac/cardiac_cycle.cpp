@@ -114,9 +114,8 @@ std::vector<Index> toParticles(const std::vector<Index>& vertices, Index first) 
 
 }  // namespace
 
-CardiacCycle::CardiacCycle(const CycleSettings& cycle, const LvModel& model, Index firstParticle,
-                           Real dt)
-    : m_centre(model.centre), m_dt(dt), m_contraction(cycle.contraction) {
+CardiacCycle::CardiacCycle(const CycleSettings& cycle, const LvModel& model, Index firstParticle)
+    : m_centre(model.centre), m_contraction(cycle.contraction) {
   if (!cycle.enabled) return;
   {
     // Relaxation lasts a share of the regular diastole (the irregular pattern cuts diastoles).
@@ -126,7 +125,7 @@ CardiacCycle::CardiacCycle(const CycleSettings& cycle, const LvModel& model, Ind
   std::vector<Index> beating = selectBeatingVertices(cycle, model);
   const BeatClockSettings main = clockSettings(cycle);
   if (cycle.pattern != BeatPattern::Inconsistent) {
-    m_regions.push_back({toParticles(beating, firstParticle), BeatClock(main, dt), {}, restOf(beating, model), {}});
+    m_regions.push_back({toParticles(beating, firstParticle), BeatClock(main), {}, restOf(beating, model), {}});
     return;
   }
   // Inconsistent: the listed segments leave the main region and get their own clock, with
@@ -147,18 +146,17 @@ CardiacCycle::CardiacCycle(const CycleSettings& cycle, const LvModel& model, Ind
   other.displacePerStep =
       main.displacePerStep * Real(main.systoleSteps) / Real(other.systoleSteps);
   other.beats = main.beats > 0 ? std::max(1, int(std::lround(main.beats * double(rate)))) : 0;
-  BeatClock offClock(other, dt);
-  const double cycleSteps = main.physiological ? double(other.period) / double(dt)
-                                               : double(other.systoleSteps + other.diastoleSteps);
-  offClock.delayStart(int(std::lround(cycleSteps * double(cycle.inconsistentPhaseOffset))));
-  m_regions.push_back({toParticles(mainPart, firstParticle), BeatClock(main, dt), {}, restOf(mainPart, model), {}});
+  other.startDelay = cycle.inconsistentPhaseOffset;
+  const BeatClock offClock(other);
+  m_regions.push_back({toParticles(mainPart, firstParticle), BeatClock(main), {}, restOf(mainPart, model), {}});
   m_regions.push_back({toParticles(offPart, firstParticle), offClock, {}, restOf(offPart, model), {}});
 }
 
-void CardiacCycle::apply(std::vector<Vec3>& positions, std::vector<Vec3>& predicted) {
+void CardiacCycle::apply(std::vector<Vec3>& positions, std::vector<Vec3>& predicted, const pbd::StepContext& context) {
+  const Real dt = context.dt;
   for (BeatingRegion& region : m_regions) {
     if (!region.clock.physiological()) {
-      moveTowardCentre(positions, predicted, region.particles, m_centre, region.clock.advance());
+      moveTowardCentre(positions, predicted, region.particles, m_centre, region.clock.advance(dt));
       continue;
     }
     const Phase phase = region.clock.phase();
@@ -171,12 +169,12 @@ void CardiacCycle::apply(std::vector<Vec3>& positions, std::vector<Vec3>& predic
       region.endSystole.resize(region.particles.size());
       for (std::size_t k = 0; k < region.particles.size(); ++k) region.endSystole[k] = positions[region.particles[k]];
     }
-    region.clock.advance();
+    region.clock.advance(dt);
     if (phase == Phase::Systole) {
       followPath(predicted, region, m_centre, m_contraction);
     } else if (phase == Phase::Diastole && m_relaxationSeconds > 0 && !region.endSystole.empty()) {
-      const double elapsed = double(step + 1) * double(m_dt);
-      if (elapsed <= m_relaxationSeconds + 0.5 * double(m_dt)) relaxPath(predicted, region, elapsed, m_relaxationSeconds);
+      const double elapsed = double(step + 1) * double(dt);
+      if (elapsed <= m_relaxationSeconds + 0.5 * double(dt)) relaxPath(predicted, region, elapsed, m_relaxationSeconds);
     }
   }
 }

@@ -19,6 +19,7 @@
 #include "cardiac/beat_clock.h"
 #include "cardiac/lv_model.h"
 #include "cardiac/scenario.h"
+#include "pbd/step_context.h"
 
 namespace hs::cardiac {
 
@@ -45,10 +46,10 @@ void moveTowardCentre(std::vector<Vec3>& positions, std::vector<Vec3>& predicted
 
 class CardiacCycle {
  public:
-  CardiacCycle(const CycleSettings& cycle, const LvModel& model, Index firstParticle, Real dt);
+  CardiacCycle(const CycleSettings& cycle, const LvModel& model, Index firstParticle);
 
   // Moves the beating particles for this step (after prediction) and advances the clocks.
-  void apply(std::vector<Vec3>& positions, std::vector<Vec3>& predicted);
+  void apply(std::vector<Vec3>& positions, std::vector<Vec3>& predicted, const pbd::StepContext& context);
 
   [[nodiscard]] Phase phase() const;  // of the first (main) region
   [[nodiscard]] int beatsCompleted() const;  // systoles completed by the main region
@@ -58,7 +59,6 @@ class CardiacCycle {
  private:
   std::vector<BeatingRegion> m_regions;
   Vec3 m_centre;
-  Real m_dt = 0;
   Real m_contraction = 0;           // physiological mode (m)
   double m_relaxationSeconds = 0;   // physiological mode: prescribed return to rest
 };

@@ -23,17 +23,6 @@ pbd::SoftBodySettings softBodySettings(const TissueSettings& tissue) {
   return s;
 }
 
-// The wall particles must exist before the cycle can refer to them; this builds them and
-// returns the first wall particle id.
-Index buildWall(const Scenario& scenario, const LvModel& model, pbd::Particles& particles,
-                pbd::ConstraintSet& constraints) {
-  const Index first = pbd::addSoftBody(particles, constraints, model.mesh, model.surface,
-                                       softBodySettings(scenario.tissue));
-  for (Index v : model.pinned) particles.inverseMass[first + v] = 0;
-  pbd::finalizeConstraints(constraints, particles.position);
-  return first;
-}
-
 }  // namespace
 
 HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
@@ -41,31 +30,40 @@ HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
   if (!scenario.heart && !scenario.blood.enabled)
     throw std::invalid_argument("model.enabled: with no heart and no blood (blood.enabled = false) there is "
                                 "nothing to simulate");
-  m_solver.dt = scenario.simulation.dt;
   m_solver.iterations = scenario.simulation.iterations;
   m_solver.volumePasses = scenario.simulation.volumePasses;
-  m_solver.gravity = scenario.simulation.gravity;
   m_solver.gravityScale[static_cast<std::size_t>(pbd::ParticleKind::Tissue)] = scenario.tissue.gravity ? 1 : 0;
   m_solver.damping[static_cast<std::size_t>(pbd::ParticleKind::Tissue)] = scenario.tissue.damping;
-  m_solver.threads = threads;
-  if (scenario.heart) {
-    m_model.emplace(buildLvModel(scenario.geometry));
-    m_firstWallParticle = buildWall(m_scenario, *m_model, m_particles, m_constraints);
-    m_cycle.emplace(scenario.cycle, *m_model, m_firstWallParticle, scenario.simulation.dt);
-    assert(m_firstWallParticle == 0 && "cavityVolume reads particle positions as model vertices");
-    m_restVolume.reserve(m_model->mesh.tets.size());
-    for (const pbd::Tet& t : m_model->mesh.tets) {
-      const auto& x = m_model->mesh.vertices;
-      m_restVolume.push_back(pbd::signedTetVolume(x[t[0]], x[t[1]], x[t[2]], x[t[3]]));
-    }
-  }
+  if (scenario.heart) buildHeart();
   m_firstBloodParticle = Index(m_particles.size());
-  // Blood beyond this box is lost: the container, or the heart's rest bounding box grown by
-  // a quarter of its long axis (blood that left through a vessel's open end).
-  if (scenario.container.enabled) {
-    const Vec3 r = Vec3::Constant(scenario.blood.radius);
-    m_domainMin = scenario.container.min - r;
-    m_domainMax = scenario.container.max + r;
+  findDomain();
+  if (scenario.blood.enabled) buildBlood();
+}
+
+// The wall: the LV model's vertices as the first particles, its constraints, the cycle.
+void HeartSimulation::buildHeart() {
+  m_model.emplace(buildLvModel(m_scenario.geometry));
+  const LvModel& model = *m_model;
+  m_firstWallParticle = pbd::addSoftBody(m_particles, m_constraints, model.mesh, model.surface,
+                                         softBodySettings(m_scenario.tissue));
+  for (Index v : model.pinned) m_particles.inverseMass[m_firstWallParticle + v] = 0;
+  pbd::finalizeConstraints(m_constraints, m_particles.position);
+  m_cycle.emplace(m_scenario.cycle, model, m_firstWallParticle);
+  assert(m_firstWallParticle == 0 && "cavityVolume reads particle positions as model vertices");
+  m_restVolume.reserve(model.mesh.tets.size());
+  for (const pbd::Tet& t : model.mesh.tets) {
+    const auto& x = model.mesh.vertices;
+    m_restVolume.push_back(pbd::signedTetVolume(x[t[0]], x[t[1]], x[t[2]], x[t[3]]));
+  }
+}
+
+// Blood beyond this box is lost: the container, or the heart's rest bounding box grown by a
+// quarter of its long axis (blood that left through a vessel's open end).
+void HeartSimulation::findDomain() {
+  if (m_scenario.container.enabled) {
+    const Vec3 r = Vec3::Constant(m_scenario.blood.radius);
+    m_domainMin = m_scenario.container.min - r;
+    m_domainMax = m_scenario.container.max + r;
   } else if (m_model) {
     m_domainMin = m_domainMax = m_model->mesh.vertices.front();
     for (const Vec3& v : m_model->mesh.vertices) {
@@ -79,84 +77,128 @@ HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
     m_domainMin = Vec3::Constant(-std::numeric_limits<Real>::max());
     m_domainMax = Vec3::Constant(std::numeric_limits<Real>::max());
   }
-  if (scenario.blood.enabled) {
-    // The start block first: it checks the particle count against memory before anything
-    // else is allocated; then the solver settings check the remaining parameters.
-    const std::vector<pbd::Vec3> start = bloodStartPositions(scenario, m_model ? &*m_model : nullptr);
-    if (m_model) {
-      m_wallContact = std::make_unique<pbd::ParticleTetCollider>(m_model->mesh.tets, m_firstWallParticle);
-      // Blood lives on the shell's inner side (the cavity and the vessel lumens): the inner
-      // layer's vertices, 2i (lv_model.h).
-      std::vector<std::uint8_t> wetted(m_model->mesh.vertices.size(), 0);
-      for (std::size_t v = 0; v < wetted.size(); v += 2) wetted[v] = 1;
-      m_wallContact->setWettedVertices(wetted);
-      m_circulation = std::make_unique<Circulation>(*m_model, scenario.circulation, scenario.blood, scenario.cycle);
-    }
-    pbd::FluidStepSettings fluid = bloodSolverSettings(scenario, threads);
-    if (m_model) {
-      // The wall takes part in every density iteration (and once more after its own
-      // constraints, in step()): blood squeezed by the beating wall must not be pushed
-      // through it by its own pressure.
-      fluid.afterIteration = [this](std::vector<pbd::Vec3>& x, std::span<const Index> ids, const pbd::Particles& p) {
-        // Valves first, the wall last: the closed-valve disc has the lumen's radius, and the
-        // wall's faceted lumen lies a little inside it, so the wall has the final word.
-        m_circulation->gatePoints(p, x, ids);
-        m_wallContact->resolvePoints(p, x, ids, wallContactSettings());
-      };
-    }
-    m_fluid = std::make_unique<pbd::FluidSolver>(fluid);
-    const Real inverseMass = Real(1) / m_fluid->settings().fluid.particleMass;
-    for (const pbd::Vec3& x : start) m_particles.add(x, inverseMass, pbd::ParticleKind::Fluid);
-    // Blood the start sites cannot hold begins in the body, waiting to enter (closed loop).
-    const std::size_t waiting =
-        scenario.blood.particles > 0 && std::size_t(scenario.blood.particles) > start.size()
-            ? std::size_t(scenario.blood.particles) - start.size()
-            : 0;
-    for (std::size_t k = 0; k < waiting; ++k) m_particles.add(start.back(), inverseMass, pbd::ParticleKind::Fluid);
-    if (waiting > 0) m_circulation->startWaiting(m_particles, m_firstBloodParticle, waiting);
-    m_bloodIds.resize(m_particles.size() - m_firstBloodParticle);
-    for (std::size_t k = 0; k < m_bloodIds.size(); ++k) m_bloodIds[k] = Index(k);
-    m_bloodOrigin.resize(m_bloodIds.size(), FlowRegion::Outside);
-    if (m_circulation)
-      for (std::size_t k = 0; k < m_bloodIds.size(); ++k) {
-        const Index i = m_firstBloodParticle + Index(k);
-        m_bloodOrigin[k] = m_circulation->parked(i) ? FlowRegion::Parked
-                                                    : m_circulation->classify(m_particles.position[i]);
-      }
-    reorderBlood();
+}
+
+// The blood particles after the wall, its solver and, with a heart, the wall contact and the
+// circulation.
+void HeartSimulation::buildBlood() {
+  // The start block first: it checks the particle count against memory before anything else
+  // is allocated; then the solver settings check the remaining parameters.
+  const std::vector<pbd::Vec3> start = bloodStartPositions(m_scenario, m_model ? &*m_model : nullptr);
+  if (m_model) {
+    m_wallContact = std::make_unique<pbd::ParticleTetCollider>(m_model->mesh.tets, m_firstWallParticle);
+    // Blood lives on the shell's inner side (the cavity and the vessel lumens): the inner
+    // layer's vertices, 2i (lv_model.h).
+    std::vector<std::uint8_t> wetted(m_model->mesh.vertices.size(), 0);
+    for (std::size_t v = 0; v < wetted.size(); v += 2) wetted[v] = 1;
+    m_wallContact->setWettedVertices(wetted);
+    m_circulation.emplace(*m_model, m_scenario);
   }
+  m_fluid = std::make_unique<pbd::FluidSolver>(bloodSolverSettings(m_scenario));
+  const Real inverseMass = Real(1) / m_fluid->settings().fluid.particleMass;
+  for (const pbd::Vec3& x : start) m_particles.add(x, inverseMass, pbd::ParticleKind::Fluid);
+  // Blood the start sites cannot hold begins in the body, waiting to enter (closed loop).
+  const std::size_t wanted = m_scenario.blood.particles > 0 ? std::size_t(m_scenario.blood.particles) : 0;
+  const std::size_t waiting = wanted > start.size() ? wanted - start.size() : 0;
+  for (std::size_t k = 0; k < waiting; ++k) m_particles.add(start.back(), inverseMass, pbd::ParticleKind::Fluid);
+  if (waiting > 0) m_circulation->loop.startWaiting(m_particles, m_firstBloodParticle, waiting);
+  recordBloodOrigins();
+  reorderBlood();
+}
+
+// Where each blood particle starts (bloodOrigin), by id, before any reordering.
+void HeartSimulation::recordBloodOrigins() {
+  if (!m_circulation) return;
+  const FlowPath& path = m_model->flowPath;
+  m_bloodOrigin.resize(m_particles.size() - m_firstBloodParticle);
+  for (std::size_t i = m_firstBloodParticle; i < m_particles.size(); ++i)
+    m_bloodOrigin[i - m_firstBloodParticle] =
+        m_particles.active(i) ? path.classify(m_particles.position[i], m_scenario.blood.radius, m_scenario.blood.spacing)
+                              : FlowRegion::Parked;
 }
 
 // Blood particles drift away from their memory neighbours as they flow; sorting them along a
 // Z-order curve of the grid cells now and then keeps the fluid solver's gathers from the
-// particle arrays cache-friendly (its own solve already runs in cell order).
+// particle arrays cache-friendly (its own solve already runs in cell order). Every column
+// moves, the ids with them.
 void HeartSimulation::reorderBlood() {
   const std::vector<pbd::Vec3> x(m_particles.position.begin() + m_firstBloodParticle, m_particles.position.end());
-  const std::vector<Index> order = pbd::mortonOrder(x, m_scenario.blood.supportRadius);
-  pbd::permuteRange(m_particles, m_firstBloodParticle, order);
-  pbd::applyOrder(m_bloodIds, order);
-  if (m_circulation) m_circulation->permute(order);
+  pbd::permuteRange(m_particles, m_firstBloodParticle, pbd::mortonOrder(x, m_scenario.blood.supportRadius));
 }
 
+// One step, stage by stage (docs/architecture.md). Each stage is a named call; the engine's
+// stages (pbd::) know nothing of hearts, the cardiac ones call into the engine.
 void HeartSimulation::step() {
-  if (m_fluid && m_steps > 0 && m_steps % kReorderInterval == 0) reorderBlood();
-  if (m_cycle) m_lastPhase = m_cycle->phase();
-  if (m_circulation) m_circulation->beginStep(m_particles, m_firstBloodParticle, m_lastPhase, m_solver.dt);
-  pbd::StepHooks hooks;
-  hooks.afterPrediction = [this](pbd::Particles& p) {
-    if (m_cycle) m_cycle->apply(p.position, p.predicted);
-    if (m_fluid) m_fluid->projectDensity(p);
-  };
-  if (m_wallContact) {
-    hooks.afterProjection = [this](pbd::Particles& p) {
-      m_circulation->gateParticles(p, m_firstBloodParticle);
-      m_wallContact->resolve(p, m_firstBloodParticle, Index(p.size()), wallContactSettings());
-    };
-  }
-  if (m_fluid) hooks.postProcessVelocities = [this](pbd::Particles& p) { m_fluid->postProcessVelocities(p); };
-  pbd::step(m_constraints, m_particles, m_solver, hooks);
-  if (m_circulation) m_circulation->endStep(m_particles, m_firstBloodParticle, m_fluid->pressures());
+  const pbd::StepContext context =
+      pbd::makeStepContext(m_scenario.simulation.dt, m_scenario.simulation.gravity, m_threads, m_steps);
+  beginStep(context);                                                       // reorder, valves, flow meter
+  applyExternalForces(context);                                             // filling pressure, gravity
+  pbd::predictPositions(m_particles, context);                              // p = x + dt v
+  moveWall(context);                                                        // cardiac cycle
+  solveBloodDensity(context);                                               // PBF, valves and wall inside
+  pbd::projectConstraints(m_constraints, m_particles, m_solver, context);   // the wall's own constraints
+  resolveBloodContacts(context);                                            // valves, wall push-out
+  pbd::updateVelocities(m_particles, m_solver, context);                    // v = (p - x)/dt, x = p
+  if (m_fluid) m_fluid->postProcessVelocities(m_particles, context);        // viscosity, XSPH
+  endStep(context);                                                         // flows, the loop
   ++m_steps;
+}
+
+void HeartSimulation::beginStep(const pbd::StepContext& context) {
+  if (m_fluid && context.stepIndex > 0 && context.stepIndex % kReorderInterval == 0) reorderBlood();
+  if (m_cycle) m_lastPhase = m_cycle->phase();
+  if (!m_circulation) return;
+  m_circulation->valves.decide(m_lastPhase, m_circulation->meter.lastStep().valvePressures);
+  m_circulation->meter.begin(m_particles, m_firstBloodParticle);
+}
+
+// The filling pressure before gravity (the order of the two sums is part of the state).
+void HeartSimulation::applyExternalForces(const pbd::StepContext& context) {
+  if (m_circulation) m_circulation->filling.apply(m_particles, m_firstBloodParticle, context);
+  pbd::applyExternalForces(m_particles, m_solver, context);
+}
+
+void HeartSimulation::moveWall(const pbd::StepContext& context) {
+  if (m_cycle) m_cycle->apply(m_particles.position, m_particles.predicted, context);
+}
+
+// PBF's density iterations. The wall takes part in every one (closed valves first, the wall
+// last: the closed-valve disc has the lumen's radius and the wall's faceted lumen lies a
+// little inside it, so the wall has the final word): blood squeezed by the beating wall must
+// not be pushed through it by its own pressure.
+void HeartSimulation::solveBloodDensity(const pbd::StepContext& context) {
+  if (!m_fluid) return;
+  if (!m_wallContact) {
+    m_fluid->projectDensity(m_particles, context);
+    return;
+  }
+  const pbd::ParticleTetSettings contact = wallContactSettings(context);
+  m_fluid->beginDensitySolve(m_particles, context);
+  for (int iteration = 0; iteration < m_fluid->iterations(); ++iteration) {
+    m_fluid->iterateDensity(context);
+    std::vector<Vec3>& points = m_fluid->workingPositions();
+    m_circulation->valves.gatePoints(m_particles, points, m_fluid->slotParticles());
+    m_wallContact->resolvePoints(m_particles, points, m_fluid->slotParticles(), contact);
+  }
+  m_fluid->endDensitySolve(m_particles, context);
+}
+
+// After the wall's constraints have moved it: the valves and the wall once more on the blood's
+// predictions (thesis 4.4; two-way, the wall takes its share of the push).
+void HeartSimulation::resolveBloodContacts(const pbd::StepContext& context) {
+  if (!m_wallContact) return;
+  m_circulation->valves.gateParticles(m_particles, m_firstBloodParticle);
+  m_wallContact->resolve(m_particles, m_firstBloodParticle, Index(m_particles.size()), wallContactSettings(context));
+}
+
+// What crossed where, then the loop: blood past a vessel's end waits, waiting blood re-enters.
+void HeartSimulation::endStep(const pbd::StepContext&) {
+  if (!m_circulation) return;
+  Circulation& c = *m_circulation;
+  c.meter.measure(m_particles, m_firstBloodParticle, m_fluid->pressures(), c.valves.states());
+  const BloodLoop::Turnover turnover =
+      c.settings.loop ? c.loop.circulate(m_particles, m_firstBloodParticle) : BloodLoop::Turnover{};
+  c.meter.recordLoop(turnover.returned, turnover.reentered, c.loop.waiting());
 }
 
 const std::vector<Real>& HeartSimulation::pressures() const {
@@ -164,10 +206,10 @@ const std::vector<Real>& HeartSimulation::pressures() const {
   return m_fluid ? m_fluid->pressures() : none;
 }
 
-pbd::ParticleTetSettings HeartSimulation::wallContactSettings() const {
+pbd::ParticleTetSettings HeartSimulation::wallContactSettings(const pbd::StepContext& context) const {
   pbd::ParticleTetSettings contact;
   contact.radius = m_scenario.blood.radius;
-  contact.threads = m_threads;
+  contact.threads = context.threads;
   contact.twoWay = m_scenario.circulation.twoWay;
   contact.slip = m_scenario.circulation.wallSlip;
   return contact;

@@ -1,13 +1,11 @@
 #pragma once
 // One simulated world: the beating heart wall (the LV model as a PBD soft body driven by the
-// cardiac cycle) and/or blood (PBF particles). Both live in one particle set and one step,
-// following thesis Fig. 4.1 / Algorithm 1: external forces and prediction, then the cardiac
-// cycle moves the beating vertices and the blood's density constraints are solved, then the
-// wall's constraints are projected, then velocities are updated and the blood's are
-// post-processed (viscosity). The wall particles come first (particle = model vertex), then
-// the blood. With both, blood that the moving wall has swept over is pushed back out of the
-// wall's tetrahedra after the wall's constraints (thesis 4.4, one-way: the wall does not feel
-// the blood yet).
+// cardiac cycle) and/or blood (PBF particles), in one particle set: the wall's vertices first
+// (particle = model vertex), then the blood. step() lists the stages of a step in order
+// (thesis Fig. 4.1 / Algorithm 1, PBF Algorithm 1); docs/architecture.md names the file and
+// function of each. With both, blood is kept out of the wall inside every density iteration
+// and once more after the wall's constraints (thesis 4.4); with circulation.two_way the push
+// is shared with the wall (the wall feels the blood).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -21,6 +19,7 @@
 #include "pbd/fluid_solver.h"
 #include "pbd/particle_tet_collision.h"
 #include "pbd/solver.h"
+#include "pbd/step_context.h"
 
 namespace hs::cardiac {
 
@@ -48,32 +47,29 @@ class HeartSimulation {
   [[nodiscard]] const CardiacCycle& cycle() const { return *m_cycle; }
   [[nodiscard]] const pbd::Particles& particles() const { return m_particles; }
   [[nodiscard]] const pbd::ConstraintSet& constraints() const { return m_constraints; }
-  // Blood particles are [firstBloodParticle(), particles().size()).
+  // Blood particles are [firstBloodParticle(), particles().size()), reordered along a Morton
+  // curve every kReorderInterval steps; particles().id follows each one.
   [[nodiscard]] Index firstBloodParticle() const { return m_firstBloodParticle; }
-  [[nodiscard]] BloodStats bloodStats() const;
-  // The creation index (0 .. count-1, in start-block order) of each blood particle: the
-  // particles are reordered along a Morton curve every kReorderInterval steps.
-  [[nodiscard]] const std::vector<Index>& bloodIds() const { return m_bloodIds; }
   static constexpr int kReorderInterval = 50;
-  [[nodiscard]] double time() const { return double(m_steps) * double(m_solver.dt); }
+  [[nodiscard]] BloodStats bloodStats() const;
+  [[nodiscard]] double time() const { return double(m_steps) * double(m_scenario.simulation.dt); }
   [[nodiscard]] std::int64_t stepCount() const { return m_steps; }
   // Phase during the last step (what the wall was doing), Systole before the first.
   [[nodiscard]] Phase lastPhase() const { return m_lastPhase; }
 
-  // Heart and blood: the flow path (valves, loop, per-step flows and pressures); null otherwise.
-  [[nodiscard]] const Circulation* circulation() const { return m_circulation.get(); }
+  // Heart and blood: the flow path's pieces (valves, flow meter, loop); null otherwise.
+  [[nodiscard]] const Circulation* circulation() const { return m_circulation ? &*m_circulation : nullptr; }
   // Pressure (Pa) of each particle from the last density solve (0 for the wall), see
   // pbd::FluidSolver::pressures(); empty without blood.
   [[nodiscard]] const std::vector<Real>& pressures() const;
   // Where a blood particle started (its FlowRegion at t = 0: inflow vessel, ventricle, or
   // Parked for blood that began outside the model); Outside without a heart.
   [[nodiscard]] FlowRegion bloodOrigin(Index particle) const {
-    const Index id = m_bloodIds[particle - m_firstBloodParticle];
-    return id < m_bloodOrigin.size() ? m_bloodOrigin[id] : FlowRegion::Outside;
+    return m_bloodOrigin.empty() ? FlowRegion::Outside : m_bloodOrigin[m_particles.id[particle] - m_firstBloodParticle];
   }
   // A blood particle that is shown and measured (not parked outside the model).
   [[nodiscard]] bool bloodActive(Index particle) const {
-    return particle >= m_firstBloodParticle && m_particles.inverseMass[particle] > Real(0);
+    return particle >= m_firstBloodParticle && m_particles.active(particle);
   }
 
   // Heart only (hasHeart()).
@@ -83,6 +79,22 @@ class HeartSimulation {
   [[nodiscard]] Real restDeviationRelative() const;
 
  private:
+  // Construction.
+  void buildHeart();
+  void buildBlood();
+  void findDomain();
+  void recordBloodOrigins();
+  // The stages of step(), in order.
+  void beginStep(const pbd::StepContext& context);
+  void applyExternalForces(const pbd::StepContext& context);
+  void moveWall(const pbd::StepContext& context);
+  void solveBloodDensity(const pbd::StepContext& context);
+  void resolveBloodContacts(const pbd::StepContext& context);
+  void endStep(const pbd::StepContext& context);
+
+  void reorderBlood();
+  pbd::ParticleTetSettings wallContactSettings(const pbd::StepContext& context) const;
+
   Scenario m_scenario;
   int m_threads = 1;
   std::optional<LvModel> m_model;
@@ -94,12 +106,9 @@ class HeartSimulation {
   std::optional<CardiacCycle> m_cycle;
   std::unique_ptr<pbd::FluidSolver> m_fluid;
   std::unique_ptr<pbd::ParticleTetCollider> m_wallContact;  // heart and blood
-  std::unique_ptr<Circulation> m_circulation;               // heart and blood
+  std::optional<Circulation> m_circulation;                 // heart and blood
   Vec3 m_domainMin = Vec3::Zero(), m_domainMax = Vec3::Zero();  // outside: blood is lost
-  std::vector<Index> m_bloodIds;
-  std::vector<FlowRegion> m_bloodOrigin;  // per blood id
-  void reorderBlood();
-  pbd::ParticleTetSettings wallContactSettings() const;
+  std::vector<FlowRegion> m_bloodOrigin;  // per blood particle id - firstBloodParticle
   std::vector<Real> m_restVolume;  // per model tet
   std::int64_t m_steps = 0;
   Phase m_lastPhase = Phase::Systole;

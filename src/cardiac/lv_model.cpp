@@ -114,6 +114,36 @@ namespace {
 LvModel buildValidatedLvModel(const LvGeometryParams& params);
 }  // namespace
 
+namespace {
+
+Orifice orificeOf(const LvModel& model, const std::vector<Index>& ring, Real radius, const Vec3& forward) {
+  Orifice o;
+  Vec3 centroid = Vec3::Zero();
+  for (Index v : ring) centroid += model.mesh.vertices[v];
+  o.centre = centroid / Real(ring.size());
+  o.forward = forward;
+  o.radius = radius;
+  return o;
+}
+
+// The flow path of the finished model's rest shape (flow_path.h).
+FlowPath flowPathOf(const LvModel& model) {
+  const LvGeometryParams& g = model.params;
+  FlowPath f;
+  f.mitral = orificeOf(model, model.mitralRing, g.mitralRadius, -Vec3::UnitY());
+  f.aortic = orificeOf(model, model.aorticRing, g.aorticRadius, Vec3::UnitY());
+  f.inflowTop = f.mitral.centre.y() + g.baseThickness + g.inflowVesselLength;
+  f.outflowTop = f.aortic.centre.y() + g.baseThickness + g.outflowVesselLength;
+  f.inflowLength = f.inflowTop - f.mitral.centre.y();
+  f.apexAxisOrigin = Vec3(0, f.mitral.centre.y(), 0);
+  f.midWallRadius = g.endoRadius + Real(0.5) * g.wallThickness;
+  f.midWallLongAxis = g.endoLongAxis + Real(0.5) * g.wallThickness;
+  f.plateMid = Real(0.5) * g.baseThickness;
+  return f;
+}
+
+}  // namespace
+
 LvModel buildLvModel(const LvGeometryParams& params) {
   validate(params);
   try {
@@ -169,6 +199,7 @@ LvModel buildValidatedLvModel(const LvGeometryParams& params) {
   model.mitralRing = fanRing(s, mitral);
   model.aorticRing = fanRing(s, aortic);
   model.longAxisLength = Real(d.c + d.t);
+  model.flowPath = flowPathOf(model);
   return model;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cardiac/flow_path.h"
 #include "pbd/tet_mesh.h"
 
 namespace hs::cardiac {
@@ -64,6 +65,7 @@ struct LvModel {
   std::vector<Index> aorticRing;
   Vec3 centre = Vec3::Zero();  // contraction centre: centroid of the myocardium vertices
   Real longAxisLength = 0;     // (m) base plane to epicardial apex
+  FlowPath flowPath;           // the orifices, the vessels' ends, the cavity test
   LvGeometryParams params;
 };
 

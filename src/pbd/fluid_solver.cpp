@@ -23,14 +23,11 @@ NeighbourGridSettings gridSettingsFor(int threads) {
 }  // namespace
 
 FluidSolver::FluidSolver(FluidStepSettings settings)
-    : m_settings(std::move(settings)),
-      m_kernels(makeSphKernels(m_settings.fluid.supportRadius)),
-      m_grid(gridSettingsFor(m_settings.base.threads)) {}
+    : m_settings(std::move(settings)), m_kernels(makeSphKernels(m_settings.fluid.supportRadius)) {}
 
 void FluidSolver::setSettings(const FluidStepSettings& settings) {
   m_settings = settings;
   m_kernels = makeSphKernels(m_settings.fluid.supportRadius);
-  m_grid.setSettings(gridSettingsFor(m_settings.base.threads));
 }
 
 void FluidSolver::updateFluidIndices(const Particles& particles) {
@@ -43,86 +40,104 @@ void FluidSolver::updateFluidIndices(const Particles& particles) {
   m_indexedCount = particles.size();
 }
 
-void FluidSolver::step(Particles& particles) {
+void FluidSolver::step(Particles& particles, const StepContext& context) {
   // PBF Algorithm 1 lines 1-4: v <- v + dt f_ext (gravity), p <- x + dt v.
-  applyExternalForces(particles, m_settings.base);
-  predictPositions(particles, m_settings.base);
-  projectDensity(particles);
+  applyExternalForces(particles, m_settings.base, context);
+  predictPositions(particles, context);
+  projectDensity(particles, context);
   // Lines 20-21: v <- (p - x)/dt, x <- p.
-  updateVelocities(particles, m_settings.base);
+  updateVelocities(particles, m_settings.base, context);
   // Line 22: wall contacts, vorticity confinement and viscosity on the new velocities.
-  postProcessVelocities(particles);
+  postProcessVelocities(particles, context);
 }
 
-void FluidSolver::projectDensity(Particles& particles) {
+void FluidSolver::projectDensity(Particles& particles, const StepContext& context) {
+  beginDensitySolve(particles, context);
+  for (int iteration = 0; iteration < m_settings.iterations; ++iteration) iterateDensity(context);
+  endDensitySolve(particles, context);
+}
+
+// Lines 5-7: neighbours of the predicted positions, once per step, cell edge = h. The solve
+// then runs in the grid's cell order (slots).
+void FluidSolver::beginDensitySolve(const Particles& particles, const StepContext& context) {
   updateFluidIndices(particles);
-  const int threads = m_settings.base.threads;
-  const FluidSettings& fluid = m_settings.fluid;
-  const Real radius = m_settings.particleRadius;
-  const std::vector<Plane>& walls = m_settings.walls;
+  const int threads = context.threads;
   const auto n = std::ptrdiff_t(m_fluid.size());
   const bool parallel = std::size_t(n) >= kParallelThreshold;
   m_gathered.resize(m_fluid.size());
 #pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
   for (std::ptrdiff_t s = 0; s < n; ++s) m_gathered[s] = particles.predicted[m_fluid[s]];
+  m_grid.setSettings(gridSettingsFor(threads));
+  m_grid.build(m_gathered, m_settings.fluid.supportRadius);
+  m_grid.buildSlotNeighbourLists(m_settings.fluid.supportRadius, m_lists);
+  gatherSlots(particles, threads);
+  m_lambdaSum.assign(m_fluid.size(), Real(0));
+}
 
-  // Lines 5-7: neighbours of the predicted positions, once per step, cell edge = h. The
-  // solve then runs in the grid's cell order (slots).
-  m_grid.build(m_gathered, fluid.supportRadius);
-  m_grid.buildSlotNeighbourLists(fluid.supportRadius, m_lists);
+// Slot k's particle, working position, inverse mass (0 for pinned and parked particles: the
+// iterations leave them where they are) and, for mesh collisions, start-of-step position.
+void FluidSolver::gatherSlots(const Particles& particles, int threads) {
   const std::vector<Index>& sorted = m_grid.sortedIndices();
-  const StaticMeshCollider* const mesh = m_settings.mesh.get();
-  const Real maxCorrection = fluid.maxCorrection;
+  const bool mesh = m_settings.mesh != nullptr;
+  const auto n = std::ptrdiff_t(m_fluid.size());
   m_slotParticle.resize(m_fluid.size());
   m_p.resize(m_fluid.size());
   m_w.resize(m_fluid.size());
   m_x.resize(mesh ? m_fluid.size() : 0);
-#pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
+#pragma omp parallel for schedule(static) num_threads(threads) if (std::size_t(n) >= kParallelThreshold)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     const Index particle = m_fluid[sorted[k]];
     m_slotParticle[k] = particle;
     m_p[k] = m_grid.sortedPositions()[k];
-    m_w[k] = particles.inverseMass[particle];
+    m_w[k] = particles.active(particle) ? particles.inverseMass[particle] : Real(0);
     if (mesh) m_x[k] = particles.position[particle];
   }
+}
 
-  m_lambdaSum.assign(m_fluid.size(), Real(0));
+void FluidSolver::iterateDensity(const StepContext& context) {
+  const int threads = context.threads;
+  const FluidSettings& fluid = m_settings.fluid;
+  const Real radius = m_settings.particleRadius;
+  const std::vector<Plane>& walls = m_settings.walls;
+  const StaticMeshCollider* const mesh = m_settings.mesh.get();
+  const Real maxCorrection = fluid.maxCorrection;
+  const auto n = std::ptrdiff_t(m_slotParticle.size());
   const std::span<const Index> all(m_slots);
-  for (int iteration = 0; iteration < m_settings.iterations; ++iteration) {
-    // Lines 9-11: rho_i (PBF eq. 2) and lambda_i (eq. 11); lines 12-15: dp_i (eq. 12) and the
-    // particle collisions (thesis eq. 4.6).
-    computeLambdas(m_p, m_lists, all, m_kernels, fluid, m_density, m_lambda, threads, &m_pairGradient);
-    computeDensityCorrections(m_p, m_lists, all, m_kernels, fluid, m_lambda, m_dp, threads, &m_pairGradient);
-    // Lines 16-18: p_i <- p_i + dp_i (Jacobi: all dp from the same p), then collision
-    // response against the walls, C = n.p - (d + r) >= 0 (thesis eq. 4.5).
-#pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
-    for (std::ptrdiff_t s = 0; s < n; ++s) {
-      m_lambdaSum[s] += m_lambda[s];
-      if (m_w[s] <= Real(0)) continue;  // pinned
-      Vec3 dp = m_dp[s];
-      const Real dp2 = dp.squaredNorm();
-      if (maxCorrection > Real(0) && dp2 > maxCorrection * maxCorrection) dp *= maxCorrection / std::sqrt(dp2);
-      Vec3 p = m_p[s] + dp;
-      for (const Plane& plane : walls) p += projectPlaneCollision(p, m_w[s], plane, radius);
-      if (mesh) p = mesh->collide(m_x[s], p, radius);
-      m_p[s] = p;
-    }
-    if (m_settings.afterIteration) m_settings.afterIteration(m_p, m_slotParticle, particles);
+  // Lines 9-11: rho_i (PBF eq. 2) and lambda_i (eq. 11); lines 12-15: dp_i (eq. 12) and the
+  // particle collisions (thesis eq. 4.6).
+  computeLambdas(m_p, m_lists, all, m_kernels, fluid, m_density, m_lambda, threads, &m_pairGradient);
+  computeDensityCorrections(m_p, m_lists, all, m_kernels, fluid, m_lambda, m_dp, threads, &m_pairGradient);
+  // Lines 16-18: p_i <- p_i + dp_i (Jacobi: all dp from the same p), then collision
+  // response against the walls, C = n.p - (d + r) >= 0 (thesis eq. 4.5).
+#pragma omp parallel for schedule(static) num_threads(threads) if (std::size_t(n) >= kParallelThreshold)
+  for (std::ptrdiff_t s = 0; s < n; ++s) {
+    m_lambdaSum[s] += m_lambda[s];
+    if (m_w[s] <= Real(0)) continue;  // pinned or parked
+    Vec3 dp = m_dp[s];
+    const Real dp2 = dp.squaredNorm();
+    if (maxCorrection > Real(0) && dp2 > maxCorrection * maxCorrection) dp *= maxCorrection / std::sqrt(dp2);
+    Vec3 p = m_p[s] + dp;
+    for (const Plane& plane : walls) p += projectPlaneCollision(p, m_w[s], plane, radius);
+    if (mesh) p = mesh->collide(m_x[s], p, radius);
+    m_p[s] = p;
   }
+}
 
+void FluidSolver::endDensitySolve(Particles& particles, const StepContext& context) {
   // Pressure (see pressures() in the header): p_i = -(rho0 / dt^2) sum over iterations of lambda_i.
   m_pressure.assign(particles.size(), Real(0));
-  const Real pressureScale = -fluid.restDensity / (m_settings.base.dt * m_settings.base.dt);
-#pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
+  const Real pressureScale = -m_settings.fluid.restDensity / (context.dt * context.dt);
+  const auto n = std::ptrdiff_t(m_slotParticle.size());
+#pragma omp parallel for schedule(static) num_threads(context.threads) if (std::size_t(n) >= kParallelThreshold)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     particles.predicted[m_slotParticle[k]] = m_p[k];
     m_pressure[m_slotParticle[k]] = pressureScale * m_lambdaSum[k];
   }
 }
 
-void FluidSolver::postProcessVelocities(Particles& particles) {
+void FluidSolver::postProcessVelocities(Particles& particles, const StepContext& context) {
   if (m_slotParticle.empty() || m_lists.offsets.size() != m_slotParticle.size() + 1) return;
-  const int threads = m_settings.base.threads;
+  const int threads = context.threads;
   const auto n = std::ptrdiff_t(m_slotParticle.size());
   const bool parallel = std::size_t(n) >= kParallelThreshold;
   const std::span<const Index> all(m_slots);
@@ -145,7 +160,7 @@ void FluidSolver::postProcessVelocities(Particles& particles) {
     m_v[k] = v;
   }
   const FluidSettings& fluid = m_settings.fluid;
-  const Real dt = m_settings.base.dt;
+  const Real dt = context.dt;
   if (fluid.vorticityConfinement > Real(0)) {
     // PBF eq. 15-16, before the viscosity (Macklin & Mueller Algorithm 1 line 22).
     applyVorticityConfinement(m_p, m_v, m_lists, all, m_kernels, fluid, dt, m_vorticity, m_vNew, threads);
@@ -157,93 +172,6 @@ void FluidSolver::postProcessVelocities(Particles& particles) {
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     if (m_w[k] > Real(0)) particles.velocity[m_slotParticle[k]] = m_vNew[k];
   }
-}
-
-std::vector<Vec3> fluidBlock(const Vec3& lower, const Vec3& upper, Real spacing) {
-  std::array<int, 3> count{};
-  for (int a = 0; a < 3; ++a) {
-    // Whole cells only; the small tolerance keeps (upper - lower) = k d from losing a cell
-    // to rounding.
-    const Real cells = (upper[a] - lower[a]) / spacing;
-    count[std::size_t(a)] = std::max(0, int(std::floor(cells + Real(1e-4))));
-  }
-  std::vector<Vec3> x;
-  x.reserve(std::size_t(count[0]) * std::size_t(count[1]) * std::size_t(count[2]));
-  for (int k = 0; k < count[2]; ++k)
-    for (int j = 0; j < count[1]; ++j)
-      for (int i = 0; i < count[0]; ++i)
-        x.push_back(lower + spacing * Vec3(Real(i) + Real(0.5), Real(j) + Real(0.5), Real(k) + Real(0.5)));
-  return x;
-}
-
-std::vector<Plane> boxWalls(const Vec3& lower, const Vec3& upper) {
-  std::vector<Plane> walls;
-  for (int a = 0; a < 3; ++a) {
-    Plane low, high;
-    low.normal = Vec3::Unit(a);  // n.x >= lower
-    low.offset = lower[a];
-    high.normal = -Vec3::Unit(a);  // -n.x >= -upper
-    high.offset = -upper[a];
-    walls.push_back(low);
-    walls.push_back(high);
-  }
-  return walls;
-}
-
-Index latticeNeighbourCount(Real supportRadius, Real spacing) {
-  const int reach = int(std::ceil(supportRadius / spacing)) + 1;
-  const Real h2 = supportRadius * supportRadius;
-  Index count = 0;
-  for (int k = -reach; k <= reach; ++k)
-    for (int j = -reach; j <= reach; ++j)
-      for (int i = -reach; i <= reach; ++i) {
-        if (i == 0 && j == 0 && k == 0) continue;
-        if ((spacing * Vec3(Real(i), Real(j), Real(k))).squaredNorm() < h2) ++count;
-      }
-  return count;
-}
-
-FluidStats measureFluid(const Particles& particles, const FluidSettings& fluid, Real spacing, int threads) {
-  std::vector<Index> indices;
-  std::vector<Vec3> x;
-  for (std::size_t i = 0; i < particles.size(); ++i) {
-    if (particles.kind[i] != ParticleKind::Fluid) continue;
-    indices.push_back(Index(i));
-    x.push_back(particles.position[i]);
-  }
-  FluidStats stats;
-  stats.fluidCount = x.size();
-  // 90% of an interior lattice particle's neighbours, rounded up.
-  stats.fullThreshold =
-      Index(std::ceil(Real(0.9) * Real(latticeNeighbourCount(fluid.supportRadius, spacing))));
-  if (x.empty()) return stats;
-  for (const Index i : indices) stats.maxSpeed = std::max(stats.maxSpeed, particles.velocity[i].norm());
-  // The solver's own grid and slot lists (cell order, no per-list sort): the statistics are
-  // sums over particles and do not depend on their order but for rounding.
-  NeighbourGrid grid(gridSettingsFor(threads));
-  grid.build(x, fluid.supportRadius);
-  NeighbourLists lists;
-  grid.buildSlotNeighbourLists(fluid.supportRadius, lists);
-  const std::vector<Vec3>& slotPositions = grid.sortedPositions();
-  std::vector<Index> all(x.size());
-  std::iota(all.begin(), all.end(), Index(0));
-  std::vector<Real> density;
-  computeDensities(slotPositions, lists, all, makeSphKernels(fluid.supportRadius), fluid, density, threads);
-  double sumAbs = 0, sumSigned = 0;
-  for (std::size_t s = 0; s < x.size(); ++s) {
-    if (lists.offsets[s + 1] - lists.offsets[s] < stats.fullThreshold) continue;
-    const Real c = density[s] / fluid.restDensity - Real(1);
-    ++stats.fullCount;
-    sumAbs += double(std::abs(c));
-    sumSigned += double(c);
-    stats.densityErrorMax = std::max(stats.densityErrorMax, std::abs(c));
-  }
-  stats.meanNeighbours = Real(double(lists.indices.size()) / double(x.size()));
-  if (stats.fullCount > 0) {
-    stats.densityErrorMean = Real(sumAbs / double(stats.fullCount));
-    stats.densitySignedMean = Real(sumSigned / double(stats.fullCount));
-  }
-  return stats;
 }
 
 }  // namespace hs::pbd

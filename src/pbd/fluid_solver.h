@@ -16,12 +16,12 @@
 // loops are per-particle gathers, so the result is bitwise identical for any thread count.
 // After warm-up a step allocates nothing: every buffer keeps its capacity.
 //
-// Mixed sets: step() runs the solver.h phases over the whole set, so tissue particles in the
+// Mixed sets: step() runs the solver.h stages over the whole set, so tissue particles in the
 // same set are integrated too (gravity, prediction, velocity update, no constraints). A world
-// with tissue should call applyExternalForces/predictPositions itself and use
-// projectDensity() between prediction and the velocity update and postProcessVelocities()
-// after it.
-#include <functional>
+// with more bodies lists its own step (cardiac/heart_simulation.cpp) from the stages below:
+// beginDensitySolve, iterations() x iterateDensity (with its own contacts on
+// workingPositions() after each), endDensitySolve, and postProcessVelocities after the
+// velocity update. Parked particles (Particles::state) take no part; pinned ones do not move.
 #include <memory>
 #include <span>
 #include <vector>
@@ -33,11 +33,12 @@
 #include "pbd/particles.h"
 #include "pbd/solver.h"
 #include "pbd/sph_kernels.h"
+#include "pbd/step_context.h"
 
 namespace hs::pbd {
 
 struct FluidStepSettings {
-  SolverSettings base;          // dt, gravity (and gravityScale), threads; base.iterations unused
+  SolverSettings base;          // gravityScale and damping for step(); base.iterations unused
   int iterations = 4;           // density solver iterations per step (PBF Algorithm 1 line 8)
   FluidSettings fluid;          // rho0, m, h, eps, s_corr, XSPH c
   Real particleRadius = Real(0.08);  // m, distance kept from the walls (thesis: 0.08 m)
@@ -46,11 +47,6 @@ struct FluidStepSettings {
   // kept particleRadius from the mesh on the side it came from (mesh_collider.h). Shared,
   // read-only: copies of the settings use the same mesh.
   std::shared_ptr<const StaticMeshCollider> mesh;
-  // Called after every density iteration with the working positions (slot order) and the
-  // particle of each slot: contacts with moving bodies the solver does not know (the heart
-  // wall) take part in the iterations, as collisions do in PBF's Algorithm 1.
-  std::function<void(std::vector<Vec3>& positions, std::span<const Index> slotParticles, const Particles& particles)>
-      afterIteration;
 };
 
 class FluidSolver {
@@ -61,14 +57,23 @@ class FluidSolver {
   void setSettings(const FluidStepSettings& settings);
 
   // One whole step (see the header comment).
-  void step(Particles& particles);
+  void step(Particles& particles, const StepContext& context);
 
-  // The phases, for a caller that integrates a mixed set itself. projectDensity expects
-  // particles.predicted to hold the predicted positions; it builds the neighbour lists and
-  // runs the iterations. postProcessVelocities (wall contacts, vorticity confinement,
-  // viscosity) uses the lists of the last projectDensity.
-  void projectDensity(Particles& particles);
-  void postProcessVelocities(Particles& particles);
+  // The stages, for a world that lists its own step. beginDensitySolve gathers the fluid's
+  // predicted positions into slot order and builds the neighbour lists; iterateDensity is one
+  // Jacobi density iteration (PBF Alg. 1 lines 9-18) on the working positions; a world's
+  // contacts with bodies the solver does not know (the heart wall) act on workingPositions()
+  // between iterations, as collisions do in Algorithm 1; endDensitySolve writes the positions
+  // back and the pressures. projectDensity is the three with nothing between the iterations.
+  // postProcessVelocities (wall contacts, vorticity confinement, viscosity) uses the lists of
+  // the last solve and reads the particles' positions after the velocity update.
+  void beginDensitySolve(const Particles& particles, const StepContext& context);
+  void iterateDensity(const StepContext& context);
+  [[nodiscard]] std::vector<Vec3>& workingPositions() { return m_p; }
+  void endDensitySolve(Particles& particles, const StepContext& context);
+  void projectDensity(Particles& particles, const StepContext& context);
+  void postProcessVelocities(Particles& particles, const StepContext& context);
+  [[nodiscard]] int iterations() const { return m_settings.iterations; }
 
   // Forget the cached fluid index list (call after changing kinds without changing the
   // particle count; a change of count is detected automatically).
@@ -94,6 +99,7 @@ class FluidSolver {
   static constexpr std::size_t kNotIndexed = ~std::size_t(0);
 
   void updateFluidIndices(const Particles& particles);
+  void gatherSlots(const Particles& particles, int threads);
 
   FluidStepSettings m_settings;
   SphKernels m_kernels;
@@ -118,33 +124,5 @@ class FluidSolver {
   std::vector<Vec3> m_vNew;        // viscosity output
   std::vector<Vec3> m_vorticity;   // vorticity confinement work array
 };
-
-// A cubic lattice of spacing d filling the box [lower, upper]: one particle at the centre of
-// each whole cell of edge d, x = lower + d (i + 1/2), so particles keep d/2 from every face.
-std::vector<Vec3> fluidBlock(const Vec3& lower, const Vec3& upper, Real spacing);
-
-// Six inward-facing planes of the box [lower, upper] (walls for FluidStepSettings).
-std::vector<Plane> boxWalls(const Vec3& lower, const Vec3& upper);
-
-struct FluidStats {
-  std::size_t fluidCount = 0;
-  std::size_t fullCount = 0;         // fluid particles with a full neighbourhood
-  Index fullThreshold = 0;           // neighbour count that counts as full
-  Real densityErrorMean = 0;         // mean |rho/rho0 - 1| over full-neighbourhood particles
-  Real densityErrorMax = 0;          // max  |rho/rho0 - 1| over them
-  Real densitySignedMean = 0;        // mean (rho/rho0 - 1) over them (compression > 0)
-  Real maxSpeed = 0;                 // max |v| over all fluid particles
-  Real meanNeighbours = 0;           // neighbours within h per fluid particle
-};
-
-// Neighbour count (|r| < h, self excluded) of an interior particle of a cubic lattice of
-// spacing d.
-Index latticeNeighbourCount(Real supportRadius, Real spacing);
-
-// Density error and speed of the fluid particles at their current positions. A particle has
-// a full neighbourhood when it has at least 90% of latticeNeighbourCount(h, spacing)
-// neighbours (free-surface and wall particles lack neighbours and are under-dense by design).
-FluidStats measureFluid(const Particles& particles, const FluidSettings& fluid, Real spacing,
-                        int threads = 1);
 
 }  // namespace hs::pbd

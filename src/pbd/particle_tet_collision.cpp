@@ -301,7 +301,7 @@ std::size_t ParticleTetCollider::resolve(Particles& particles, Index first, Inde
     if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = first + Index(s);
-    if (w[i] <= Real(0)) continue;
+    if (!particles.dynamic(i)) continue;
     Vec3 x = p[i];
     WallContact contact;
     if (!pushOut(p, particles.position, x, particles.position[i], settings, contact)) continue;
@@ -336,7 +336,7 @@ std::size_t ParticleTetCollider::resolvePoints(const Particles& particles, std::
     if (count >= kParallelThreshold)
   for (std::ptrdiff_t k = 0; k < count; ++k) {
     const Index i = ids[std::size_t(k)];
-    if (particles.inverseMass[i] <= Real(0)) continue;
+    if (!particles.dynamic(i)) continue;
     WallContact contact;  // unused: one-way
     moved += pushOut(particles.predicted, particles.position, points[std::size_t(k)], particles.position[i],
                      settings, contact);

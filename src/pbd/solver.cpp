@@ -82,37 +82,37 @@ void projectPlanes(const ConstraintSet& constraints, Particles& particles) {
   const auto n = static_cast<std::ptrdiff_t>(particles.size());
 #pragma omp for schedule(static)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
+    const Real w = particles.active(std::size_t(i)) ? particles.inverseMass[i] : Real(0);
     for (const Plane& plane : constraints.planes) {
-      particles.predicted[i] += projectPlaneCollision(
-          particles.predicted[i], particles.inverseMass[i], plane, constraints.collisionRadius);
+      particles.predicted[i] += projectPlaneCollision(particles.predicted[i], w, plane, constraints.collisionRadius);
     }
   }
 }
 
 }  // namespace
 
-void applyExternalForces(Particles& particles, const SolverSettings& settings) {
+void applyExternalForces(Particles& particles, const SolverSettings& settings, const StepContext& context) {
   const auto n = static_cast<std::ptrdiff_t>(particles.size());
-  const Vec3 dv = settings.dt * settings.gravity;
-#pragma omp parallel for schedule(static) num_threads(settings.threads) \
+  const Vec3 dv = context.dt * context.gravity;
+#pragma omp parallel for schedule(static) num_threads(context.threads) \
     if (static_cast<std::size_t>(n) >= kParallelThreshold)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
-    if (particles.inverseMass[i] > Real(0))
+    if (particles.dynamic(std::size_t(i)))
       particles.velocity[i] += settings.gravityScale[static_cast<std::size_t>(particles.kind[i])] * dv;
   }
 }
 
-void predictPositions(Particles& particles, const SolverSettings& settings) {
+void predictPositions(Particles& particles, const StepContext& context) {
   const auto n = static_cast<std::ptrdiff_t>(particles.size());
-#pragma omp parallel for schedule(static) num_threads(settings.threads) \
+#pragma omp parallel for schedule(static) num_threads(context.threads) \
     if (static_cast<std::size_t>(n) >= kParallelThreshold)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
-    particles.predicted[i] = particles.position[i] + settings.dt * particles.velocity[i];
+    particles.predicted[i] = particles.position[i] + context.dt * particles.velocity[i];
   }
 }
 
-void projectConstraints(ConstraintSet& constraints, Particles& particles,
-                        const SolverSettings& settings) {
+void projectConstraints(ConstraintSet& constraints, Particles& particles, const SolverSettings& settings,
+                        const StepContext& context) {
   // XPBD multipliers start each step at zero; plain PBD groups (no compliance) never read them.
   auto resetLambdas = [](auto& group) {
     if (group.compliance != Real(0)) std::fill(group.lambda.begin(), group.lambda.end(), Real(0));
@@ -125,11 +125,11 @@ void projectConstraints(ConstraintSet& constraints, Particles& particles,
   if (constraintCount == 0) return;  // e.g. blood only: its constraints are the fluid solver's
   const std::size_t work = constraintCount + particles.size();
   // One parallel region for all iterations: threads meet only at the end of each colour.
-#pragma omp parallel num_threads(settings.threads) if (work >= kParallelThreshold)
+#pragma omp parallel num_threads(context.threads) if (work >= kParallelThreshold)
   {
-    const ProjectionParams distance = paramsOf(constraints.distances, settings.dt);
-    const ProjectionParams area = paramsOf(constraints.areas, settings.dt);
-    const ProjectionParams volume = paramsOf(constraints.volumes, settings.dt);
+    const ProjectionParams distance = paramsOf(constraints.distances, context.dt);
+    const ProjectionParams area = paramsOf(constraints.areas, context.dt);
+    const ProjectionParams volume = paramsOf(constraints.volumes, context.dt);
     const BlockSchedule& schedule = constraints.schedule;
     for (int iteration = 0; iteration < settings.iterations; ++iteration) {
       sweep(schedule, [&](std::size_t block) {
@@ -148,12 +148,12 @@ void projectConstraints(ConstraintSet& constraints, Particles& particles,
   }
 }
 
-void updateVelocities(Particles& particles, const SolverSettings& settings) {
+void updateVelocities(Particles& particles, const SolverSettings& settings, const StepContext& context) {
   const auto n = static_cast<std::ptrdiff_t>(particles.size());
-  const Real invDt = Real(1) / settings.dt;
-  const std::array<Real, 2> keep{std::max(Real(0), Real(1) - settings.damping[0] * settings.dt),
-                                 std::max(Real(0), Real(1) - settings.damping[1] * settings.dt)};
-#pragma omp parallel for schedule(static) num_threads(settings.threads) \
+  const Real invDt = context.inverseDt;
+  const std::array<Real, 2> keep{std::max(Real(0), Real(1) - settings.damping[0] * context.dt),
+                                 std::max(Real(0), Real(1) - settings.damping[1] * context.dt)};
+#pragma omp parallel for schedule(static) num_threads(context.threads) \
     if (static_cast<std::size_t>(n) >= kParallelThreshold)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const Real k = keep[static_cast<std::size_t>(particles.kind[i])];
@@ -163,14 +163,11 @@ void updateVelocities(Particles& particles, const SolverSettings& settings) {
 }
 
 void step(ConstraintSet& constraints, Particles& particles, const SolverSettings& settings,
-          const StepHooks& hooks) {
-  applyExternalForces(particles, settings);
-  predictPositions(particles, settings);
-  if (hooks.afterPrediction) hooks.afterPrediction(particles);
-  projectConstraints(constraints, particles, settings);
-  if (hooks.afterProjection) hooks.afterProjection(particles);
-  updateVelocities(particles, settings);
-  if (hooks.postProcessVelocities) hooks.postProcessVelocities(particles);
+          const StepContext& context) {
+  applyExternalForces(particles, settings, context);
+  predictPositions(particles, context);
+  projectConstraints(constraints, particles, settings, context);
+  updateVelocities(particles, settings, context);
 }
 
 std::uint64_t stateHash(const Particles& particles) {

@@ -1,7 +1,8 @@
 #pragma once
-// The position-based step of thesis Algorithm 1 (Bender et al. 2015), split into its phases
-// so that a caller can insert its own work between them (the cardiac cycle moves wall
-// vertices after prediction; blood adds density constraints; XSPH post-processes velocity):
+// The position-based step of thesis Algorithm 1 (Bender et al. 2015), split into its stages
+// so that a world can list its own step in order (the cardiac cycle moves wall vertices after
+// prediction; blood adds density constraints; XSPH post-processes velocity). Each stage takes
+// the step's StepContext (dt, gravity, threads):
 //   applyExternalForces  v <- v + dt w f_ext        (lines 4-5)
 //   predictPositions     p <- x + dt v              (lines 6-7)
 //   projectConstraints   solverIterations of Gauss-Seidel projection (lines 8-11)
@@ -9,27 +10,24 @@
 // velocity post-processing (line 15) belongs to the caller.
 #include <array>
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 #include "pbd/block_schedule.h"
 #include "pbd/constraint_group.h"
 #include "pbd/constraints.h"
 #include "pbd/particles.h"
+#include "pbd/step_context.h"
 
 namespace hs::pbd {
 
 struct SolverSettings {
-  Real dt = Real(0.005);       // s
   int iterations = 10;         // solverIterations
   int volumePasses = 0;        // extra sweeps of the volume constraints after the iterations
-  Vec3 gravity = Vec3(0, Real(-9.81), 0);
   // Share of gravity each particle kind feels, indexed by ParticleKind (Tissue, Fluid).
   std::array<Real, 2> gravityScale{1, 1};
   // 1/s, per ParticleKind (Tissue, Fluid): v <- v * max(0, 1 - damping dt) after the update.
   // Viscous tissue is damped; a liquid's dissipation is its viscosity (fluid.h), not this.
   std::array<Real, 2> damping{0, 0};
-  int threads = 1;             // OpenMP threads for projection and particle loops
 };
 
 // The constraints of one simulated world. Projection order within an iteration: block colour
@@ -44,26 +42,18 @@ struct ConstraintSet {
   Real collisionRadius = 0;  // particle radius used against planes
 };
 
-void applyExternalForces(Particles& particles, const SolverSettings& settings);
-void predictPositions(Particles& particles, const SolverSettings& settings);
-void projectConstraints(ConstraintSet& constraints, Particles& particles,
-                        const SolverSettings& settings);
-void updateVelocities(Particles& particles, const SolverSettings& settings);
+// Parked particles (Particles::state) are left alone by every stage; pinned ones (w = 0) feel
+// no forces and no constraint corrections.
+void applyExternalForces(Particles& particles, const SolverSettings& settings, const StepContext& context);
+void predictPositions(Particles& particles, const StepContext& context);
+void projectConstraints(ConstraintSet& constraints, Particles& particles, const SolverSettings& settings,
+                        const StepContext& context);
+void updateVelocities(Particles& particles, const SolverSettings& settings, const StepContext& context);
 
-// Work a caller inserts into a step (thesis Fig. 4.1): after prediction (the cardiac cycle
-// moving the wall; later the heart-blood coupling), and after the velocity update (Algorithm 1
-// line 15: velocity post-processing such as XSPH viscosity, thesis eq. 4.11). Empty: skipped.
-struct StepHooks {
-  std::function<void(Particles&)> afterPrediction;
-  // After the constraints, before the velocity update: contacts between bodies that must see
-  // where the constraints put them (blood pushed out of the wall, thesis 4.4).
-  std::function<void(Particles&)> afterProjection;
-  std::function<void(Particles&)> postProcessVelocities;
-};
-
-// One whole step: the four phases in order, with the hooks between them.
+// A step of a world with constraints only (a soft body on its own): the four stages in order.
+// Worlds with more (blood, a beating wall) list their own order, cardiac/heart_simulation.cpp.
 void step(ConstraintSet& constraints, Particles& particles, const SolverSettings& settings,
-          const StepHooks& hooks = {});
+          const StepContext& context);
 
 // FNV-1a 64-bit hash of the bytes of every position and velocity: equal states, equal hashes.
 std::uint64_t stateHash(const Particles& particles);

@@ -124,14 +124,14 @@ void SimulationRunner::stepOnce() {
   if (sim.hasHeart()) {
     cavity = double(sim.cavityVolume());
     const cardiac::Circulation* circulation = sim.circulation();
-    const cardiac::ValveFlows flows = circulation ? circulation->lastStepFlows() : cardiac::ValveFlows{};
+    const cardiac::ValveFlows flows = circulation ? circulation->meter.lastStepFlows() : cardiac::ValveFlows{};
     s.pump->record(start, sim.lastPhase(), cavity, flows);
     PumpSample sample;
     sample.time = sim.time();
     sample.cavity = cavity;
     if (circulation) {
       setFlowRates(sample, flows, sim.time() - start);
-      const cardiac::FlowStep& f = circulation->lastStep();
+      const cardiac::FlowStep& f = circulation->meter.lastStep();
       sample.pressureLv = f.pressure[std::size_t(cardiac::FlowRegion::Ventricle)];
       sample.pressureInflow = f.pressure[std::size_t(cardiac::FlowRegion::InflowVessel)];
       sample.pressureOutflow = f.pressure[std::size_t(cardiac::FlowRegion::OutflowVessel)];

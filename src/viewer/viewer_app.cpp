@@ -369,7 +369,7 @@ class ViewerApp {
     pump.cycleOn = scenario.cycle.enabled;
     pump.phase = sim.lastPhase();
     pump.thesisTiming = scenario.cycle.mode == cardiac::TimingMode::Thesis;
-    pump.valves = circulation ? circulation->lastStep().valves : cardiac::ValveStates{};
+    pump.valves = circulation ? circulation->meter.lastStep().valves : cardiac::ValveStates{};
     pump.valveMode = scenario.circulation.valveMode;
   }
 

@@ -8,6 +8,8 @@
 namespace hs::cardiac {
 namespace {
 
+constexpr Real kDt = Real(0.005);
+
 BeatClockSettings thesis() {
   BeatClockSettings s;
   s.systoleSteps = 8;
@@ -17,7 +19,7 @@ BeatClockSettings thesis() {
 }
 
 TEST(BeatClock, FollowsAlgorithm2StepByStep) {
-  BeatClock clock(thesis(), Real(0.005));
+  BeatClock clock(thesis());
   // Algorithm 2 line 3: steps = 0, state = Systole.
   EXPECT_EQ(clock.phase(), Phase::Systole);
   EXPECT_EQ(clock.stepsInPhase(), 0);
@@ -25,7 +27,7 @@ TEST(BeatClock, FollowsAlgorithm2StepByStep) {
     for (int i = 1; i <= 8; ++i) {
       ASSERT_EQ(clock.phase(), Phase::Systole) << "beat " << beat << " step " << i;
       // Lines 7-8: move by BEATING_DISPLACE, steps++.
-      EXPECT_NEAR(double(clock.advance()), 0.08, 1e-7);
+      EXPECT_NEAR(double(clock.advance(kDt)), 0.08, 1e-7);
       // Lines 9-11: when steps >= BEATING_DURATION, steps = 0 and the state switches.
       if (i < 8) {
         EXPECT_EQ(clock.stepsInPhase(), i);
@@ -37,7 +39,7 @@ TEST(BeatClock, FollowsAlgorithm2StepByStep) {
     // Fig. 4.6: diastole lasts BEATING_DURATION steps without moving, then systole again.
     for (int i = 1; i <= 8; ++i) {
       ASSERT_EQ(clock.phase(), Phase::Diastole);
-      EXPECT_EQ(clock.advance(), 0.0f);
+      EXPECT_EQ(clock.advance(kDt), 0.0f);
     }
     EXPECT_EQ(clock.phase(), Phase::Systole);
   }
@@ -46,9 +48,9 @@ TEST(BeatClock, FollowsAlgorithm2StepByStep) {
 TEST(BeatClock, StopsAfterTheRequestedBeatsAndRests) {
   BeatClockSettings s = thesis();
   s.beats = 2;
-  BeatClock clock(s, Real(0.005));
+  BeatClock clock(s);
   Real total = 0;
-  for (int i = 0; i < 200; ++i) total += clock.advance();
+  for (int i = 0; i < 200; ++i) total += clock.advance(kDt);
   EXPECT_EQ(clock.phase(), Phase::Rest);
   EXPECT_EQ(clock.systolesCompleted(), 2);
   EXPECT_NEAR(total, 2 * 8 * 0.08, 1e-5);
@@ -61,9 +63,9 @@ TEST(BeatClock, PhysiologicalSystoleIsSmoothAndSumsToTheContraction) {
   s.systolicFraction = Real(0.375);  // 0.3 s of systole
   s.contraction = Real(0.01);
   const Real dt = Real(0.001);
-  BeatClock clock(s, dt);
+  BeatClock clock(s);
   std::vector<Real> perStep;
-  while (clock.phase() == Phase::Systole) perStep.push_back(clock.advance());
+  while (clock.phase() == Phase::Systole) perStep.push_back(clock.advance(dt));
   ASSERT_EQ(perStep.size(), 300u);
   Real total = 0;
   for (Real d : perStep) total += d;
@@ -75,7 +77,7 @@ TEST(BeatClock, PhysiologicalSystoleIsSmoothAndSumsToTheContraction) {
     EXPECT_LT(std::abs(perStep[i] - perStep[i - 1]), Real(0.03) * perStep[150]);
   int diastole = 0;
   while (clock.phase() == Phase::Diastole) {
-    EXPECT_EQ(clock.advance(), 0.0f);
+    EXPECT_EQ(clock.advance(dt), 0.0f);
     ++diastole;
   }
   EXPECT_EQ(diastole, 500);
@@ -87,12 +89,12 @@ TEST(BeatClock, IrregularDiastolesAreShorterAndVary) {
   s.diastoleSteps = 20;
   s.irregularity = Real(0.6);
   auto diastoleLengths = [&s] {
-    BeatClock clock(s, Real(0.005));
+    BeatClock clock(s);
     std::vector<int> lengths;
     for (int i = 0; i < 2000; ++i) {
       const Phase before = clock.phase();
-      clock.advance();
-      if (before == Phase::Systole && clock.phase() == Phase::Diastole) lengths.push_back(clock.diastoleLength());
+      clock.advance(kDt);
+      if (before == Phase::Systole && clock.phase() == Phase::Diastole) lengths.push_back(clock.diastoleLength(kDt));
     }
     return lengths;
   };
@@ -112,11 +114,12 @@ TEST(BeatClock, IrregularDiastolesAreShorterAndVary) {
 }
 
 TEST(BeatClock, DelayedStartShiftsThePhase) {
-  BeatClock clock(thesis(), Real(0.005));
-  clock.delayStart(8);
-  for (int i = 0; i < 8; ++i) EXPECT_EQ(clock.advance(), 0.0f);
+  BeatClockSettings s = thesis();
+  s.startDelay = Real(0.5);  // half of a 16-step cycle: 8 relaxed steps
+  BeatClock clock(s);
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(clock.advance(kDt), 0.0f);
   EXPECT_EQ(clock.phase(), Phase::Systole);
-  EXPECT_GT(clock.advance(), 0.0f);
+  EXPECT_GT(clock.advance(kDt), 0.0f);
 }
 
 TEST(BeatTracker, MeasuresEdvEsvAndEjectionFraction) {

@@ -150,7 +150,7 @@ TEST(BeatPatterns, IrregularStartsContractingBeforeTheWallRelaxes) {
 TEST(BeatPatterns, InconsistentRegionsBeatOutOfStep) {
   CycleSettings c;
   c.pattern = BeatPattern::Inconsistent;
-  CardiacCycle cycle(c, model(), 0, Real(0.005));
+  CardiacCycle cycle(c, model(), 0);
   ASSERT_EQ(cycle.regions().size(), 2u);
   EXPECT_FALSE(cycle.regions()[0].particles.empty());
   EXPECT_FALSE(cycle.regions()[1].particles.empty());
@@ -165,12 +165,12 @@ TEST(BeatPatterns, InconsistentRegionsBeatOutOfStep) {
     mainOnly += mainSystole && !otherSystole;
     otherOnly += otherSystole && !mainSystole;
     std::vector<Vec3> x = model().mesh.vertices, p = x;
-    cycle.apply(x, p);
+    cycle.apply(x, p, pbd::makeStepContext(Real(0.005), Vec3::Zero(), 1));
   }
   EXPECT_GT(mainOnly, 40);
   EXPECT_GT(otherOnly, 40);
   // Normal: one region, everything in step.
-  CardiacCycle normal(CycleSettings{}, model(), 0, Real(0.005));
+  CardiacCycle normal(CycleSettings{}, model(), 0);
   EXPECT_EQ(normal.regions().size(), 1u);
 }
 

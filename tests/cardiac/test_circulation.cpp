@@ -76,8 +76,8 @@ TEST(Valve, PressureModeKeepsBackflowOut) {
   std::size_t backward = 0, closedSteps = 0;
   for (int k = 0; k < 40; ++k) {  // two systoles' worth of squeezing
     sim.step();
-    backward += sim.circulation()->lastStep().mitralBackward;
-    closedSteps += !sim.circulation()->lastStep().valves.mitralOpen;
+    backward += sim.circulation()->meter.lastStep().mitralBackward;
+    closedSteps += !sim.circulation()->meter.lastStep().valves.mitralOpen;
   }
   EXPECT_GT(closedSteps, 0u);
   EXPECT_EQ(backward, 0u);
@@ -94,7 +94,7 @@ TEST(Circulation, ClosedLoopKeepsEveryParticle) {
   std::size_t returned = 0, reentered = 0;
   for (int k = 0; k < 200; ++k) {
     sim.step();
-    const FlowStep& f = sim.circulation()->lastStep();
+    const FlowStep& f = sim.circulation()->meter.lastStep();
     returned += f.returned;
     reentered += f.reentered;
     std::size_t counted = 0;

@@ -11,7 +11,9 @@
 #include <random>
 #include <vector>
 
+#include "pbd/fluid_setup.h"
 #include "pbd/fluid_solver.h"
+#include "pbd/fluid_stats.h"
 
 namespace hs::pbd {
 namespace {
@@ -24,6 +26,7 @@ constexpr Real kG = Real(9.81);
 struct Scene {
   Particles particles;
   FluidStepSettings settings;
+  StepContext context;
   Vec3 lower, upper;  // the box
 };
 
@@ -38,9 +41,7 @@ Scene column(int nx, int ny, int nz, int boxHeight, Real h, int iterations, int 
   for (const Vec3& x : fluidBlock(scene.lower, top, kSpacing))
     scene.particles.add(x, Real(1) / particleMassFor(kRho0, kSpacing), ParticleKind::Fluid);
   FluidStepSettings& s = scene.settings;
-  s.base.dt = Real(0.005);
-  s.base.gravity = Vec3(0, -kG, 0);
-  s.base.threads = threads;
+  scene.context = makeStepContext(Real(0.005), Vec3(0, -kG, 0), threads);
   s.iterations = iterations;
   s.fluid.restDensity = kRho0;
   s.fluid.particleMass = particleMassFor(kRho0, kSpacing);
@@ -98,7 +99,7 @@ TEST(FluidSolver, ColumnSettlesInClosedBoxAndNeverLeavesIt) {
   const int steps = 600;  // 3 s
   const auto t0 = std::chrono::steady_clock::now();
   for (int k = 0; k < steps; ++k) {
-    solver.step(scene.particles);
+    solver.step(scene.particles, scene.context);
     ASSERT_TRUE(insideBox(scene)) << "a particle left the box at step " << k;
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -128,7 +129,7 @@ TEST(FluidSolver, SettledColumnPressureIsHydrostatic) {
   // One step's pressure carries the column's residual jitter: average the last 0.5 s.
   std::vector<Real> p(scene.particles.size(), Real(0));
   for (int k = 0; k < 400; ++k) {
-    solver.step(scene.particles);
+    solver.step(scene.particles, scene.context);
     ASSERT_EQ(solver.pressures().size(), p.size());
     if (k >= 300)
       for (std::size_t i = 0; i < p.size(); ++i) p[i] += solver.pressures()[i] / Real(100);
@@ -175,7 +176,7 @@ TEST(FluidSolver, DamBreakNeverLeavesTheBox) {
   for (Vec3& v : scene.particles.velocity) v = Vec3(2, 1, 0);  // thrown at the far wall
   FluidSolver solver(scene.settings);
   for (int k = 0; k < 300; ++k) {
-    solver.step(scene.particles);
+    solver.step(scene.particles, scene.context);
     ASSERT_TRUE(insideBox(scene)) << "a particle left the box at step " << k;
   }
   bool reachedFarWall = false;
@@ -197,7 +198,7 @@ TEST(FluidSolver, StepsAreBitwiseIdenticalForOneAndTwoThreads) {
       scene.particles.velocity[i] = Vec3(Real(jitter(rng)), Real(jitter(rng)), Real(jitter(rng)));
     }
     FluidSolver solver(scene.settings);
-    for (int k = 0; k < 20; ++k) solver.step(scene.particles);
+    for (int k = 0; k < 20; ++k) solver.step(scene.particles, scene.context);
     return scene.particles;
   };
   const Particles a = run(1);
@@ -224,7 +225,6 @@ TEST(FluidSolver, MaxCorrectionCapsTheStepOfACompressedBlob) {
     for (const Vec3& x : fluidBlock(Vec3::Zero(), Real(0.5) * kSpacing * Vec3(8, 8, 8), Real(0.5) * kSpacing))
       particles.add(x, Real(1) / particleMassFor(kRho0, kSpacing), ParticleKind::Fluid);
     FluidStepSettings s;
-    s.base.gravity = Vec3::Zero();
     s.iterations = 1;
     s.fluid.restDensity = kRho0;
     s.fluid.particleMass = particleMassFor(kRho0, kSpacing);
@@ -232,7 +232,7 @@ TEST(FluidSolver, MaxCorrectionCapsTheStepOfACompressedBlob) {
     s.fluid.maxCorrection = cap;
     FluidSolver solver(s);
     const std::vector<Vec3> before = particles.predicted;
-    solver.projectDensity(particles);
+    solver.projectDensity(particles, makeStepContext(Real(0.005), Vec3::Zero(), 1));
     Real longest = 0;
     for (std::size_t i = 0; i < before.size(); ++i) longest = std::max(longest, (particles.predicted[i] - before[i]).norm());
     return longest;

@@ -94,8 +94,8 @@ TEST(Solver, UnconstrainedParticleFallsLikeSymplecticEuler) {
   p.add(Vec3::Zero(), 1, ParticleKind::Fluid);
   ConstraintSet none;
   SolverSettings s;
-  s.dt = Real(0.01);
-  for (int i = 0; i < 100; ++i) step(none, p, s);
+  const StepContext context = makeStepContext(Real(0.01), Vec3(0, Real(-9.81), 0), 1);
+  for (int i = 0; i < 100; ++i) step(none, p, s, context);
   // Symplectic Euler: v_n = n g dt, x_n = g dt^2 n (n + 1) / 2.
   EXPECT_NEAR(p.velocity[0].y(), Real(-9.81), 1e-4);
   EXPECT_NEAR(p.position[0].y(), Real(-9.81 * 0.0001 * 100 * 101 / 2), 1e-3);
@@ -108,7 +108,7 @@ TEST(Solver, PlaneStopsAFallingParticle) {
   c.planes.push_back({Vec3::UnitY(), 0});
   c.collisionRadius = Real(0.05);
   SolverSettings s;
-  for (int i = 0; i < 400; ++i) step(c, p, s);
+  for (int i = 0; i < 400; ++i) step(c, p, s, makeStepContext(Real(0.005), Vec3(0, Real(-9.81), 0), 1));
   EXPECT_NEAR(p.position[0].y(), Real(0.05), 1e-5);
 }
 
@@ -117,9 +117,8 @@ TEST(Solver, SquashedSoftBodyRecoversItsRestShape) {
   const std::vector<Vec3> rest = w.particles.position;
   for (auto& x : w.particles.position) x.y() *= Real(0.7);  // squash toward the pinned floor
   SolverSettings s;
-  s.gravity.setZero();
   s.damping = {5, 5};
-  for (int i = 0; i < 400; ++i) step(w.constraints, w.particles, s);
+  for (int i = 0; i < 400; ++i) step(w.constraints, w.particles, s, makeStepContext(Real(0.005), Vec3::Zero(), 1));
   Real worst = 0;
   for (std::size_t i = 0; i < rest.size(); ++i) worst = std::max(worst, (w.particles.position[i] - rest[i]).norm());
   EXPECT_LT(worst, Real(1e-3));
@@ -129,9 +128,9 @@ TEST(Solver, SameStateForOneAndTwoThreads) {
   auto run = [](int threads) {
     World w = makeBoxWorld(8, 0);  // large enough to take the parallel path
     SolverSettings s;
-    s.threads = threads;
     for (auto& x : w.particles.position) x += Vec3(Real(0.03) * x.y(), 0, 0);  // shear
-    for (int i = 0; i < 50; ++i) step(w.constraints, w.particles, s);
+    for (int i = 0; i < 50; ++i)
+      step(w.constraints, w.particles, s, makeStepContext(Real(0.005), Vec3(0, Real(-9.81), 0), threads, i));
     return stateHash(w.particles);
   };
   const std::uint64_t one = run(1);
@@ -139,28 +138,48 @@ TEST(Solver, SameStateForOneAndTwoThreads) {
   EXPECT_EQ(one, run(1));
 }
 
-TEST(Solver, HooksRunAfterPredictionAndAfterTheVelocityUpdate) {
+TEST(Solver, AWorldListsTheStagesAndAMovedPredictionBecomesVelocity) {
   Particles p;
   p.add(Vec3::Zero(), 1, ParticleKind::Fluid);
   ConstraintSet none;
   SolverSettings s;
-  s.gravity.setZero();
-  std::vector<std::string> order;
-  StepHooks hooks;
-  // Moving the prediction by 1 mm becomes velocity (p - x)/dt in the update.
-  hooks.afterPrediction = [&](Particles& q) {
-    order.push_back("prediction");
-    q.predicted[0].x() += Real(0.001);
-  };
-  hooks.postProcessVelocities = [&](Particles& q) {
-    order.push_back("velocity");
-    EXPECT_NEAR(q.velocity[0].x(), Real(0.001) / s.dt, 1e-4);
-    q.velocity[0].setZero();
-  };
-  step(none, p, s, hooks);
-  EXPECT_EQ(order, (std::vector<std::string>{"prediction", "velocity"}));
-  EXPECT_EQ(p.velocity[0], Vec3::Zero());
+  const StepContext context = makeStepContext(Real(0.005), Vec3::Zero(), 1);
+  applyExternalForces(p, s, context);
+  predictPositions(p, context);
+  p.predicted[0].x() += Real(0.001);  // a world's own stage between prediction and update
+  projectConstraints(none, p, s, context);
+  updateVelocities(p, s, context);
+  EXPECT_NEAR(p.velocity[0].x(), Real(0.001) / context.dt, 1e-4);
   EXPECT_NEAR(p.position[0].x(), 0.001, 1e-7);
+}
+
+// A parked particle keeps its mass but no stage moves it; a pinned one (w = 0) feels no force.
+TEST(Solver, ParkedAndPinnedParticlesStayPut) {
+  Particles p;
+  p.add(Vec3(0, 1, 0), 1, ParticleKind::Fluid);
+  p.add(Vec3(1, 1, 0), 0, ParticleKind::Tissue);
+  p.add(Vec3(2, 1, 0), 1, ParticleKind::Fluid);
+  p.state[0] = ParticleState::Parked;
+  ConstraintSet c;
+  c.planes.push_back({Vec3::UnitY(), Real(2)});  // would push every free particle up
+  SolverSettings s;
+  for (int i = 0; i < 10; ++i) step(c, p, s, makeStepContext(Real(0.01), Vec3(0, Real(-9.81), 0), 1, i));
+  EXPECT_EQ(p.position[0], Vec3(0, 1, 0));
+  EXPECT_EQ(p.velocity[0], Vec3::Zero());
+  EXPECT_EQ(p.position[1], Vec3(1, 1, 0));
+  EXPECT_EQ(p.inverseMass[0], Real(1));
+  EXPECT_GT(p.position[2].y(), Real(1.9));  // the free one did move
+}
+
+TEST(Particles, ReorderingMovesIdentityAndState) {
+  Particles p;
+  for (int k = 0; k < 4; ++k) p.add(Vec3(Real(k), 0, 0), 1, ParticleKind::Fluid);
+  p.state[3] = ParticleState::Parked;
+  permuteRange(p, 1, {2, 0, 1});  // slots 1..3 receive old 3, 1, 2
+  EXPECT_EQ(p.id, (std::vector<Index>{0, 3, 1, 2}));
+  EXPECT_EQ(p.position[1].x(), Real(3));
+  EXPECT_FALSE(p.active(1));
+  EXPECT_TRUE(p.active(2) && p.active(3));
 }
 
 TEST(Solver, StateHashSeesEveryBit) {

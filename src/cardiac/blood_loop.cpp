@@ -1,0 +1,109 @@
+#include "cardiac/blood_loop.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hs::cardiac {
+
+BloodLoop::BloodLoop(const FlowPath& path, const BloodSettings& blood) : m_path(path), m_spacing(blood.spacing) {
+  const Orifice& mitral = path.mitral;
+  // Re-entry sites: a square lattice of spacing d across the inflow lumen, half a spacing
+  // below its far end, at least a radius inside the lumen wall.
+  const Real y = path.inflowTop - Real(0.5) * m_spacing;
+  const Real reach = mitral.radius - blood.radius;
+  const int n = int(std::floor(reach / m_spacing));
+  for (int i = -n; i <= n; ++i)
+    for (int k = -n; k <= n; ++k) {
+      const Vec3 site(mitral.centre.x() + Real(i) * m_spacing, y, mitral.centre.z() + Real(k) * m_spacing);
+      if (mitral.radial(site) <= reach) m_inletSites.push_back(site);
+    }
+  if (m_inletSites.empty()) m_inletSites.push_back(Vec3(mitral.centre.x(), y, mitral.centre.z()));
+  // Parked particles wait above the vessels, between them, more than a kernel support apart
+  // (so they are nobody's neighbours).
+  m_parkingOrigin = Vec3(Real(0.5) * (mitral.centre.x() + path.aortic.centre.x()),
+                         std::max(path.inflowTop, path.outflowTop) + 2 * blood.supportRadius, mitral.centre.z());
+  m_parkingPitch = Real(1.01) * blood.supportRadius;
+}
+
+Vec3 BloodLoop::parkingSite(std::size_t slot) const {
+  // Rows of 8 across x, then z, then layers upward.
+  const Real i = Real(slot % 8), j = Real((slot / 8) % 8), layer = Real(slot / 64);
+  return m_parkingOrigin + m_parkingPitch * Vec3(i - Real(3.5), layer, j - Real(3.5));
+}
+
+void BloodLoop::park(pbd::Particles& particles, Index particle) {
+  std::size_t slot = 0;
+  while (slot < m_lot.size() && m_lot[slot] != kFreeSlot) ++slot;
+  if (slot == m_lot.size()) m_lot.push_back(kFreeSlot);
+  m_lot[slot] = particles.id[particle];
+  m_queue.push_back(particles.id[particle]);
+  particles.position[particle] = particles.predicted[particle] = parkingSite(slot);
+  particles.velocity[particle] = Vec3::Zero();
+  particles.state[particle] = pbd::ParticleState::Parked;
+}
+
+void BloodLoop::startWaiting(pbd::Particles& particles, Index first, std::size_t count) {
+  const std::size_t n = particles.size() - first;
+  for (std::size_t k = n - count; k < n; ++k) park(particles, Index(first + k));
+}
+
+BloodLoop::Turnover BloodLoop::circulate(pbd::Particles& particles, Index first) {
+  Turnover turnover;
+  for (std::size_t i = first; i < particles.size(); ++i) {
+    if (!particles.active(i)) continue;
+    const Vec3& x = particles.position[i];
+    if (m_path.pastInflowEnd(x, m_spacing) || m_path.pastOutflowEnd(x, m_spacing)) {
+      park(particles, Index(i));
+      ++turnover.returned;
+    }
+  }
+  turnover.reentered = reenter(particles, first);
+  return turnover;
+}
+
+std::size_t BloodLoop::reenter(pbd::Particles& particles, Index first) {
+  if (m_queue.empty()) return 0;
+  // Blood near the inflow vessel's far end: the sites must be clear of it, and re-entering
+  // particles take its mean velocity (they join the moving column). The same pass finds
+  // where each parked particle is now (the set may have been reordered since it was parked).
+  // Blood is created after the wall and only reordered among itself, so its ids are
+  // [first, end) in some order.
+  const Orifice& mitral = m_path.mitral;
+  const Real near = m_path.inflowTop - 2 * m_spacing;
+  const Index firstId = first;
+  m_occupied.clear();
+  m_parkedAt.assign(particles.size() - first, kFreeSlot);
+  Vec3 velocity = Vec3::Zero();
+  for (std::size_t i = first; i < particles.size(); ++i) {
+    if (!particles.active(i)) {
+      m_parkedAt[particles.id[i] - firstId] = Index(i);
+      continue;
+    }
+    const Vec3& x = particles.position[i];
+    if (x.y() < near || mitral.radial(x) > mitral.radius + m_spacing) continue;
+    m_occupied.push_back(x);
+    velocity += particles.velocity[i];
+  }
+  if (!m_occupied.empty()) velocity /= Real(m_occupied.size());
+  velocity = mitral.forward * std::max(Real(0), velocity.dot(mitral.forward));  // never back out
+  const Real clear2 = Real(0.9 * 0.9) * m_spacing * m_spacing;
+  std::size_t reentered = 0;
+  for (const Vec3& site : m_inletSites) {
+    if (m_queue.empty()) break;
+    bool free = true;
+    for (const Vec3& x : m_occupied) free = free && (x - site).squaredNorm() >= clear2;
+    if (!free) continue;
+    const Index id = m_queue.front();
+    m_queue.pop_front();
+    std::replace(m_lot.begin(), m_lot.end(), id, kFreeSlot);
+    const Index i = m_parkedAt[id - firstId];
+    particles.position[i] = particles.predicted[i] = site;
+    particles.velocity[i] = velocity;
+    particles.state[i] = pbd::ParticleState::Active;
+    m_occupied.push_back(site);
+    ++reentered;
+  }
+  return reentered;
+}
+
+}  // namespace hs::cardiac

@@ -1,0 +1,57 @@
+#pragma once
+// The blood's path through the LV model, as geometry: inflow vessel -> mitral orifice ->
+// ventricle -> aortic orifice -> outflow vessel. Part of the LV model (LvModel::flowPath),
+// found once on its rest shape; the one place that says which region a point is in.
+#include <cstdint>
+
+#include "pbd/types.h"
+
+namespace hs::cardiac {
+
+using pbd::Real;
+using pbd::Vec3;
+
+enum class FlowRegion : std::uint8_t { InflowVessel = 0, Ventricle = 1, OutflowVessel = 2, Parked = 3, Outside = 4 };
+inline constexpr std::size_t kFlowRegionCount = 5;
+
+// One orifice disc: centre, unit normal pointing downstream (forward flow), lumen radius.
+struct Orifice {
+  Vec3 centre = Vec3::Zero();
+  Vec3 forward = Vec3::UnitY();
+  Real radius = 0;
+  // Signed distance along `forward`: < 0 upstream, >= 0 downstream.
+  [[nodiscard]] Real side(const Vec3& x) const { return forward.dot(x - centre); }
+  // Distance from the disc's axis.
+  [[nodiscard]] Real radial(const Vec3& x) const {
+    const Vec3 d = x - centre;
+    return (d - forward.dot(d) * forward).norm();
+  }
+};
+
+struct FlowPath {
+  // The lumen discs where the vessels meet the cavity (the base plate's cavity side, y = 0 in
+  // model coordinates). Mitral: forward is down (-y), into the cavity; aortic: up, out of it.
+  Orifice mitral, aortic;
+  Real inflowTop = 0, outflowTop = 0;  // y of the vessels' far ends
+  Real inflowLength = 0;               // from the mitral disc to the inflow vessel's far end
+  Vec3 apexAxisOrigin = Vec3::Zero();  // the endocardial spheroid's centre on the base plane
+  Real midWallRadius = 0, midWallLongAxis = 0;
+  Real plateMid = 0;                   // half the base plate's thickness
+
+  // Which part of the path x is in, however the wall has moved. A vessel: past its valve's
+  // plane inside its lumen, within `lumenSlack` of the lumen wall and `endSlack` beyond its far
+  // end (the blood's radius and spacing: particles touching the wall count as inside). The
+  // ventricle: inside the mid-wall spheroid, continued as a cylinder up to the base plate's
+  // middle. Anything else (a particle that went through the wall) is Outside; never Parked.
+  [[nodiscard]] FlowRegion classify(const Vec3& x, Real lumenSlack, Real endSlack) const;
+  // Past the far end of the inflow (or outflow) vessel, within `slack` of its lumen's axis
+  // cylinder: blood that has left the model there.
+  [[nodiscard]] bool pastInflowEnd(const Vec3& x, Real slack) const {
+    return x.y() > inflowTop && mitral.radial(x) < mitral.radius + slack;
+  }
+  [[nodiscard]] bool pastOutflowEnd(const Vec3& x, Real slack) const {
+    return x.y() > outflowTop && aortic.radial(x) < aortic.radius + slack;
+  }
+};
+
+}  // namespace hs::cardiac

@@ -1,0 +1,71 @@
+#include "pbd/fluid_stats.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+#include "pbd/neighbour_grid.h"
+#include "pbd/sph_kernels.h"
+
+namespace hs::pbd {
+
+Index latticeNeighbourCount(Real supportRadius, Real spacing) {
+  const int reach = int(std::ceil(supportRadius / spacing)) + 1;
+  const Real h2 = supportRadius * supportRadius;
+  Index count = 0;
+  for (int k = -reach; k <= reach; ++k)
+    for (int j = -reach; j <= reach; ++j)
+      for (int i = -reach; i <= reach; ++i) {
+        if (i == 0 && j == 0 && k == 0) continue;
+        if ((spacing * Vec3(Real(i), Real(j), Real(k))).squaredNorm() < h2) ++count;
+      }
+  return count;
+}
+
+FluidStats measureFluid(const Particles& particles, const FluidSettings& fluid, Real spacing, int threads) {
+  std::vector<Index> indices;
+  std::vector<Vec3> x;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    if (particles.kind[i] != ParticleKind::Fluid) continue;
+    indices.push_back(Index(i));
+    x.push_back(particles.position[i]);
+  }
+  FluidStats stats;
+  stats.fluidCount = x.size();
+  // 90% of an interior lattice particle's neighbours, rounded up.
+  stats.fullThreshold =
+      Index(std::ceil(Real(0.9) * Real(latticeNeighbourCount(fluid.supportRadius, spacing))));
+  if (x.empty()) return stats;
+  for (const Index i : indices) stats.maxSpeed = std::max(stats.maxSpeed, particles.velocity[i].norm());
+  // The solver's own grid and slot lists (cell order, no per-list sort): the statistics are
+  // sums over particles and do not depend on their order but for rounding.
+  NeighbourGridSettings gridSettings;
+  gridSettings.threads = threads;
+  NeighbourGrid grid(gridSettings);
+  grid.build(x, fluid.supportRadius);
+  NeighbourLists lists;
+  grid.buildSlotNeighbourLists(fluid.supportRadius, lists);
+  const std::vector<Vec3>& slotPositions = grid.sortedPositions();
+  std::vector<Index> all(x.size());
+  std::iota(all.begin(), all.end(), Index(0));
+  std::vector<Real> density;
+  computeDensities(slotPositions, lists, all, makeSphKernels(fluid.supportRadius), fluid, density, threads);
+  double sumAbs = 0, sumSigned = 0;
+  for (std::size_t s = 0; s < x.size(); ++s) {
+    if (lists.offsets[s + 1] - lists.offsets[s] < stats.fullThreshold) continue;
+    const Real c = density[s] / fluid.restDensity - Real(1);
+    ++stats.fullCount;
+    sumAbs += double(std::abs(c));
+    sumSigned += double(c);
+    stats.densityErrorMax = std::max(stats.densityErrorMax, std::abs(c));
+  }
+  stats.meanNeighbours = Real(double(lists.indices.size()) / double(x.size()));
+  if (stats.fullCount > 0) {
+    stats.densityErrorMean = Real(sumAbs / double(stats.fullCount));
+    stats.densitySignedMean = Real(sumSigned / double(stats.fullCount));
+  }
+  return stats;
+}
+
+}  // namespace hs::pbd
