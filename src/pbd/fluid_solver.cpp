@@ -145,9 +145,12 @@ void FluidSolver::postProcessVelocities(Particles& particles, const StepContext&
   // Contact threshold: the projection leaves a touching particle at exactly r from the wall.
   const Real touching = m_settings.particleRadius * (1 + Real(1e-3));
   m_v.resize(m_slotParticle.size());
-  // Positions: x = p after the velocity update, so m_p already holds them.
+  // Positions after the velocity update (x = p), read back from the particles: a world may
+  // have moved the predictions after the density solve (the heart's wall push-out), so the
+  // working positions of the solve are not the final ones.
 #pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
+    m_p[k] = particles.position[m_slotParticle[k]];
     Vec3 v = particles.velocity[m_slotParticle[k]];
     // Inelastic wall contact (Mueller et al. 2007, "Position based dynamics", section 3.5:
     // colliding particles' velocities are modified for restitution): a particle touching a
