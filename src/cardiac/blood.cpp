@@ -208,11 +208,9 @@ std::vector<Vec3> bloodStartPositions(const Scenario& scenario, const LvModel* m
   return x;
 }
 
-BloodStats measureBlood(const Scenario& scenario, const pbd::Particles& particles, const Vec3& domainMin,
-                        const Vec3& domainMax, int threads) {
-  const BloodSettings& b = scenario.blood;
+BloodStats measureBlood(const pbd::Particles& particles, const pbd::FluidStats& f, const Vec3& domainMin,
+                        const Vec3& domainMax) {
   BloodStats stats;
-  const pbd::FluidStats f = pbd::measureFluid(particles, bloodFluidSettings(b), b.spacing, threads);
   stats.particles = f.fluidCount;
   stats.densityErrorMean = double(f.densityErrorMean);
   stats.densityErrorMax = double(f.densityErrorMax);

@@ -56,8 +56,9 @@ struct BloodStats {
   std::size_t insideWall = 0;
 };
 
-// `domainMin`/`domainMax`: particles outside this box count as lost.
-BloodStats measureBlood(const Scenario& scenario, const pbd::Particles& particles, const Vec3& domainMin,
-                        const Vec3& domainMax, int threads);
+// The blood's statistics from the fluid's (`fluid`, e.g. pbd::FluidSolver::measure) and the
+// particles: those outside the box [domainMin, domainMax] or non-finite count as lost.
+BloodStats measureBlood(const pbd::Particles& particles, const pbd::FluidStats& fluid, const Vec3& domainMin,
+                        const Vec3& domainMax);
 
 }  // namespace hs::cardiac

@@ -216,7 +216,8 @@ pbd::ParticleTetSettings HeartSimulation::wallContactSettings(const pbd::StepCon
 }
 
 BloodStats HeartSimulation::bloodStats() const {
-  BloodStats stats = measureBlood(m_scenario, m_particles, m_domainMin, m_domainMax, m_threads);
+  const pbd::FluidStats fluid = m_fluid->measure(m_particles, m_scenario.blood.spacing, m_threads);
+  BloodStats stats = measureBlood(m_particles, fluid, m_domainMin, m_domainMax);
   if (m_wallContact)
     stats.insideWall = m_wallContact->countInside(m_particles.position, m_firstBloodParticle, Index(m_particles.size()),
                                                   Real(0.01) * m_scenario.blood.radius, m_threads);

@@ -135,6 +135,17 @@ void FluidSolver::endDensitySolve(Particles& particles, const StepContext& conte
   }
 }
 
+FluidStats FluidSolver::measure(const Particles& particles, Real spacing, int threads) const {
+  if (m_indexedCount != particles.size() || m_slotParticle.size() != m_fluid.size() ||
+      m_lists.offsets.size() != m_slotParticle.size() + 1)
+    return measureFluid(particles, m_settings.fluid, spacing, threads);
+  std::vector<Vec3> x(m_slotParticle.size());
+  for (std::size_t k = 0; k < x.size(); ++k) x[k] = particles.position[m_slotParticle[k]];
+  FluidStats stats = measureDensityOnLists(x, m_lists, m_settings.fluid, spacing, threads);
+  for (const Index i : m_slotParticle) stats.maxSpeed = std::max(stats.maxSpeed, particles.velocity[i].norm());
+  return stats;
+}
+
 void FluidSolver::postProcessVelocities(Particles& particles, const StepContext& context) {
   if (m_slotParticle.empty() || m_lists.offsets.size() != m_slotParticle.size() + 1) return;
   const int threads = context.threads;

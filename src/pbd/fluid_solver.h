@@ -28,6 +28,7 @@
 
 #include "pbd/constraints.h"
 #include "pbd/fluid.h"
+#include "pbd/fluid_stats.h"
 #include "pbd/mesh_collider.h"
 #include "pbd/neighbour_grid.h"
 #include "pbd/particles.h"
@@ -94,6 +95,11 @@ class FluidSolver {
   // is the pressure that kept the fluid at rest density during the step. Gauge: 0 at a free
   // surface; with the one-sided constraint (unilateralDensity) it is never negative.
   const std::vector<Real>& pressures() const { return m_pressure; }
+  // The fluid's density error and speed at the particles' current positions, over the
+  // neighbour lists of the last solve (no grid of its own; fluid_stats.h,
+  // measureDensityOnLists). Before the first solve, or after the fluid set changed, it builds
+  // a grid (measureFluid).
+  FluidStats measure(const Particles& particles, Real spacing, int threads) const;
 
  private:
   static constexpr std::size_t kNotIndexed = ~std::size_t(0);

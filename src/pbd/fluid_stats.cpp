@@ -31,28 +31,33 @@ FluidStats measureFluid(const Particles& particles, const FluidSettings& fluid, 
     indices.push_back(Index(i));
     x.push_back(particles.position[i]);
   }
-  FluidStats stats;
-  stats.fluidCount = x.size();
-  // 90% of an interior lattice particle's neighbours, rounded up.
-  stats.fullThreshold =
-      Index(std::ceil(Real(0.9) * Real(latticeNeighbourCount(fluid.supportRadius, spacing))));
-  if (x.empty()) return stats;
-  for (const Index i : indices) stats.maxSpeed = std::max(stats.maxSpeed, particles.velocity[i].norm());
-  // The solver's own grid and slot lists (cell order, no per-list sort): the statistics are
-  // sums over particles and do not depend on their order but for rounding.
+  if (x.empty()) return measureDensityOnLists({}, NeighbourLists{}, fluid, spacing, threads);
+  // A grid of their own, in cell order like the solver's: the statistics are sums over
+  // particles and do not depend on their order but for rounding.
   NeighbourGridSettings gridSettings;
   gridSettings.threads = threads;
   NeighbourGrid grid(gridSettings);
   grid.build(x, fluid.supportRadius);
   NeighbourLists lists;
   grid.buildSlotNeighbourLists(fluid.supportRadius, lists);
-  const std::vector<Vec3>& slotPositions = grid.sortedPositions();
-  std::vector<Index> all(x.size());
+  FluidStats stats = measureDensityOnLists(grid.sortedPositions(), lists, fluid, spacing, threads);
+  for (const Index i : indices) stats.maxSpeed = std::max(stats.maxSpeed, particles.velocity[i].norm());
+  return stats;
+}
+
+FluidStats measureDensityOnLists(const std::vector<Vec3>& positions, const NeighbourLists& lists,
+                                 const FluidSettings& fluid, Real spacing, int threads) {
+  FluidStats stats;
+  stats.fluidCount = positions.size();
+  // 90% of an interior lattice particle's neighbours, rounded up.
+  stats.fullThreshold = Index(std::ceil(Real(0.9) * Real(latticeNeighbourCount(fluid.supportRadius, spacing))));
+  if (positions.empty()) return stats;
+  std::vector<Index> all(positions.size());
   std::iota(all.begin(), all.end(), Index(0));
   std::vector<Real> density;
-  computeDensities(slotPositions, lists, all, makeSphKernels(fluid.supportRadius), fluid, density, threads);
+  computeDensities(positions, lists, all, makeSphKernels(fluid.supportRadius), fluid, density, threads);
   double sumAbs = 0, sumSigned = 0;
-  for (std::size_t s = 0; s < x.size(); ++s) {
+  for (std::size_t s = 0; s < positions.size(); ++s) {
     if (lists.offsets[s + 1] - lists.offsets[s] < stats.fullThreshold) continue;
     const Real c = density[s] / fluid.restDensity - Real(1);
     ++stats.fullCount;
@@ -60,7 +65,7 @@ FluidStats measureFluid(const Particles& particles, const FluidSettings& fluid, 
     sumSigned += double(c);
     stats.densityErrorMax = std::max(stats.densityErrorMax, std::abs(c));
   }
-  stats.meanNeighbours = Real(double(lists.indices.size()) / double(x.size()));
+  stats.meanNeighbours = Real(double(lists.indices.size()) / double(positions.size()));
   if (stats.fullCount > 0) {
     stats.densityErrorMean = Real(sumAbs / double(stats.fullCount));
     stats.densitySignedMean = Real(sumSigned / double(stats.fullCount));
