@@ -39,19 +39,27 @@ Vec3f Camera::project(const Vec3f& world, int width, int height) const {
   return {(ndc.x() + 1) / 2 * float(width), (1 - ndc.y()) / 2 * float(height), (ndc.z() + 1) / 2};
 }
 
-const char* viewName(View view) {
+namespace {
+
+// What each view is: its name and the unit vector from the scene toward its eye.
+struct ViewFacts {
+  const char* name;
+  Vec3f towardEye;
+};
+
+ViewFacts viewFacts(View view) {
   switch (view) {
-    case View::Front:
-      return "front";
-    case View::Left:
-      return "left";
-    case View::Right:
-      return "right";
-    case View::Top:
-      return "top";
+    case View::Front: return {"front", Vec3f(0, 0, 1)};
+    case View::Left: return {"left", Vec3f(-1, 0, 0)};
+    case View::Right: return {"right", Vec3f(1, 0, 0)};
+    case View::Top: return {"top", Vec3f(0, 1, 0)};
   }
-  return "?";
+  return {"?", Vec3f(0, 0, 1)};
 }
+
+}  // namespace
+
+const char* viewName(View view) { return viewFacts(view).name; }
 
 std::optional<View> parseView(std::string_view name) {
   for (View v : kAllViews)
@@ -65,19 +73,7 @@ std::string viewNames() {
   return names;
 }
 
-Vec3f viewDirection(View view) {
-  switch (view) {
-    case View::Front:
-      return {0, 0, 1};
-    case View::Left:
-      return {-1, 0, 0};
-    case View::Right:
-      return {1, 0, 0};
-    case View::Top:
-      return {0, 1, 0};
-  }
-  return {0, 0, 1};
-}
+Vec3f viewDirection(View view) { return viewFacts(view).towardEye; }
 
 Camera viewCamera(View view, const Box& bounds, float aspect) {
   const Vec3f towardEye = viewDirection(view);
@@ -88,8 +84,7 @@ Camera viewCamera(View view, const Box& bounds, float aspect) {
   const Vec3f centre = bounds.centre();
   float halfW = 0, halfH = 0, halfD = 0;
   for (int corner = 0; corner < 8; ++corner) {
-    const Vec3f c((corner & 1) ? bounds.max.x() : bounds.min.x(),
-                  (corner & 2) ? bounds.max.y() : bounds.min.y(),
+    const Vec3f c((corner & 1) ? bounds.max.x() : bounds.min.x(), (corner & 2) ? bounds.max.y() : bounds.min.y(),
                   (corner & 4) ? bounds.max.z() : bounds.min.z());
     const Vec3f d = c - centre;
     halfW = std::max(halfW, std::abs(d.dot(right)));
