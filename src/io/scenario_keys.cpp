@@ -1,6 +1,7 @@
 // The scenario key table: one row per key. Adding a key is one row here (plus its line in
 // docs/scenarios.md and, if it belongs in the lesson file, scenarios/*.toml).
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <utility>
@@ -23,28 +24,20 @@ using cardiac::Scenario;
 using cardiac::BeatPattern;
 using cardiac::TimingMode;
 
-std::vector<KeySpec> buildKeyTable() {
-  const std::vector<std::pair<std::string, TimingMode>> modes = {
-      {"thesis", TimingMode::Thesis}, {"physiological", TimingMode::Physiological}};
-  const std::vector<std::pair<std::string, BeatPattern>> patterns = {
-      {"normal", BeatPattern::Normal},
-      {"irregular", BeatPattern::Irregular},
-      {"inconsistent", BeatPattern::Inconsistent}};
-  const std::vector<std::pair<std::string, cardiac::BloodSettings::Start>> starts = {
-      {"block", cardiac::BloodSettings::Start::Block},
-      {"chamber", cardiac::BloodSettings::Start::Chamber},
-      {"vessel", cardiac::BloodSettings::Start::Vessel}};
-  const std::vector<std::pair<std::string, cardiac::ValveMode>> valveModes = {
-      {"timing", cardiac::ValveMode::Timing},
-      {"pressure", cardiac::ValveMode::Pressure},
-      {"open", cardiac::ValveMode::Open}};
-  const char* m = "m";
+constexpr const char* kMetres = "m";
+
+// [scenario]
+std::vector<KeySpec> scenarioKeys() {
   return {
-      // [scenario]
       stringKey("scenario.name", HS_FIELD(name), true,
                 "Name shown in the output; defaults to the built-in name or the file name without .toml."),
       stringKey("scenario.description", HS_FIELD(description), false, "Free text describing the lesson."),
-      // [simulation]
+  };
+}
+
+// [simulation]
+std::vector<KeySpec> simulationKeys() {
+  return {
       realKey("simulation.dt", HS_FIELD(simulation.dt), between(1e-6, 0.1), "s", "Time step."),
       realKey("simulation.duration", HS_FIELD(simulation.duration), between(0, 36000), "s",
               "Simulated time; the run takes round(duration / dt) steps."),
@@ -54,30 +47,41 @@ std::vector<KeySpec> buildKeyTable() {
              "Extra sweeps of the wall's volume constraints after the iterations (incompressibility).", 1000),
       vec3Key("simulation.gravity", HS_FIELD(simulation.gravity), "m/s^2",
               "Gravity [x, y, z]; y is the long axis (apex at -y, vessels at +y)."),
-      // [model]
+  };
+}
+
+// [model]
+std::vector<KeySpec> modelKeys() {
+  return {
       boolKey("model.enabled", HS_FIELD(heart),
               "Whether the heart wall exists (false: blood in a container only, e.g. dam-break)."),
-      realKey("model.endo_radius", HS_FIELD(geometry.endoRadius), gt(0), m,
+      realKey("model.endo_radius", HS_FIELD(geometry.endoRadius), gt(0), kMetres,
               "Short-axis radius of the cavity at the base plane."),
-      realKey("model.endo_long_axis", HS_FIELD(geometry.endoLongAxis), gt(0), m,
+      realKey("model.endo_long_axis", HS_FIELD(geometry.endoLongAxis), gt(0), kMetres,
               "Cavity length from the base plane to the inner apex."),
-      realKey("model.wall_thickness", HS_FIELD(geometry.wallThickness), gt(0), m,
+      realKey("model.wall_thickness", HS_FIELD(geometry.wallThickness), gt(0), kMetres,
               "Myocardium thickness (also at the apex)."),
-      realKey("model.base_thickness", HS_FIELD(geometry.baseThickness), gt(0), m,
+      realKey("model.base_thickness", HS_FIELD(geometry.baseThickness), gt(0), kMetres,
               "Thickness of the base plate that holds the valves."),
-      realKey("model.mitral_radius", HS_FIELD(geometry.mitralRadius), gt(0), m,
+      realKey("model.mitral_radius", HS_FIELD(geometry.mitralRadius), gt(0), kMetres,
               "Inflow (mitral) orifice and vessel lumen radius."),
-      realKey("model.aortic_radius", HS_FIELD(geometry.aorticRadius), gt(0), m,
+      realKey("model.aortic_radius", HS_FIELD(geometry.aorticRadius), gt(0), kMetres,
               "Outflow (aortic) orifice and vessel lumen radius."),
-      realKey("model.vessel_wall_thickness", HS_FIELD(geometry.vesselWallThickness), gt(0), m,
+      realKey("model.vessel_wall_thickness", HS_FIELD(geometry.vesselWallThickness), gt(0), kMetres,
               "Wall thickness of both vessels."),
-      realKey("model.inflow_vessel_length", HS_FIELD(geometry.inflowVesselLength), gt(0), m,
+      realKey("model.inflow_vessel_length", HS_FIELD(geometry.inflowVesselLength), gt(0), kMetres,
               "Inflow vessel length above the base plate."),
-      realKey("model.outflow_vessel_length", HS_FIELD(geometry.outflowVesselLength), gt(0), m,
+      realKey("model.outflow_vessel_length", HS_FIELD(geometry.outflowVesselLength), gt(0), kMetres,
               "Outflow vessel length above the base plate."),
       realKey("model.resolution", HS_FIELD(geometry.resolution), between(0.25, 8), "",
-              "Mesh refinement: 1 = thesis-like model (1,100 vertices, 3,237 tets); elements grow ~ resolution^2."),
-      // [tissue]
+              "Mesh refinement: 1 = thesis-like model (1,100 vertices, 3,237 tets); elements grow ~ "
+              "resolution^2."),
+  };
+}
+
+// [tissue]
+std::vector<KeySpec> tissueKeys() {
+  return {
       realKey("tissue.stiffness", HS_FIELD(tissue.stiffness), between(0, 1), "",
               "PBD stiffness k of the wall's area and edge constraints (0 = limp, 1 = rigid)."),
       realKey("tissue.volume_stiffness", HS_FIELD(tissue.volumeStiffness), between(0, 1), "",
@@ -97,7 +101,18 @@ std::vector<KeySpec> buildKeyTable() {
               "Velocity damping of the wall (viscous tissue)."),
       realKey("tissue.density", HS_FIELD(tissue.density), between(1, 100000), "kg/m^3",
               "Tissue density; vertex masses come from tet volumes."),
-      // [cycle]
+  };
+}
+
+// [cycle]
+std::vector<KeySpec> cycleKeys() {
+  const std::vector<std::pair<std::string, TimingMode>> modes = {
+      {"thesis", TimingMode::Thesis}, {"physiological", TimingMode::Physiological}};
+  const std::vector<std::pair<std::string, BeatPattern>> patterns = {
+      {"normal", BeatPattern::Normal},
+      {"irregular", BeatPattern::Irregular},
+      {"inconsistent", BeatPattern::Inconsistent}};
+  return {
       boolKey("cycle.enabled", HS_FIELD(cycle.enabled), "Whether the heart beats at all."),
       choiceKey("cycle.mode", HS_FIELD(cycle.mode), modes,
                 "Timing: \"thesis\" (fixed steps per phase) or \"physiological\" (heart rate in bpm)."),
@@ -114,7 +129,7 @@ std::vector<KeySpec> buildKeyTable() {
               "Physiological mode: beats per minute."),
       realKey("cycle.systolic_fraction", HS_FIELD(cycle.systolicFraction), between(0.05, 0.95), "",
               "Physiological mode: share of each cycle spent in systole."),
-      realKey("cycle.contraction", HS_FIELD(cycle.contraction), ge(0), m,
+      realKey("cycle.contraction", HS_FIELD(cycle.contraction), ge(0), kMetres,
               "Physiological mode: total inward displacement of a beating vertex per systole."),
       realKey("cycle.relaxation_fraction", HS_FIELD(cycle.relaxationFraction), between(0, 1), "",
               "Physiological mode: share of a regular diastole the wall takes to return to rest "
@@ -127,27 +142,47 @@ std::vector<KeySpec> buildKeyTable() {
               "Irregular pattern: each diastole is shortened by a random share in [0, irregularity)."),
       intKey("cycle.seed", HS_FIELD(cycle.seed), 0, "",
              "Random seed of the irregular pattern (same seed = same run)."),
-      // [cycle.sphere]: present = the vertices inside the sphere beat too
-      vec3Key("cycle.sphere.centre", HS_FIELD(cycle.sphereCentre), m,
+  };
+}
+
+// [cycle.sphere]: present = the vertices inside the sphere beat too
+std::vector<KeySpec> cycleSphereKeys() {
+  return {
+      vec3Key("cycle.sphere.centre", HS_FIELD(cycle.sphereCentre), kMetres,
               "Centre of a sphere whose vertices beat (the table's presence enables it)."),
-      realKey("cycle.sphere.radius", HS_FIELD(cycle.sphereRadius), gt(0), m,
+      realKey("cycle.sphere.radius", HS_FIELD(cycle.sphereRadius), gt(0), kMetres,
               "Radius of that sphere; required when [cycle.sphere] is present."),
-      // [cycle.inconsistent]
+  };
+}
+
+// [cycle.inconsistent]
+std::vector<KeySpec> cycleInconsistentKeys() {
+  return {
       intListKey("cycle.inconsistent.segments", HS_FIELD(cycle.inconsistentSegments), 1, 17, true,
                  "Inconsistent pattern: segments that beat at their own rate and phase."),
       realKey("cycle.inconsistent.rate_factor", HS_FIELD(cycle.inconsistentRateFactor), between(0.1, 10), "",
               "Their beat rate relative to the rest of the heart."),
       realKey("cycle.inconsistent.phase_offset", HS_FIELD(cycle.inconsistentPhaseOffset), between(0, 1),
               "cycles", "Their phase lag, as a fraction of a cycle."),
-      // [blood]
+  };
+}
+
+// [blood]
+std::vector<KeySpec> bloodKeys() {
+  const std::vector<std::pair<std::string, cardiac::BloodSettings::Start>> starts = {
+      {"block", cardiac::BloodSettings::Start::Block},
+      {"chamber", cardiac::BloodSettings::Start::Chamber},
+      {"vessel", cardiac::BloodSettings::Start::Vessel}};
+  return {
       boolKey("blood.enabled", HS_FIELD(blood.enabled), "Whether blood particles are simulated."),
       intKey("blood.particles", HS_FIELD(blood.particles), 0, "",
-             "Number of blood particles; 0 = fill the start block (lowest layers first otherwise).", 10'000'000),
-      realKey("blood.radius", HS_FIELD(blood.radius), gt(0), m,
+             "Number of blood particles; 0 = fill the start block (lowest layers first otherwise).",
+             10'000'000),
+      realKey("blood.radius", HS_FIELD(blood.radius), gt(0), kMetres,
               "Particle radius: distance kept from walls and between particles (thesis 0.08 m)."),
-      realKey("blood.spacing", HS_FIELD(blood.spacing), gt(0), m,
+      realKey("blood.spacing", HS_FIELD(blood.spacing), gt(0), kMetres,
               "Particle spacing at rest (normally 2 radii); particle mass = rest_density spacing^3."),
-      realKey("blood.support_radius", HS_FIELD(blood.supportRadius), gt(0), m,
+      realKey("blood.support_radius", HS_FIELD(blood.supportRadius), gt(0), kMetres,
               "SPH kernel support radius h, larger than the spacing (thesis 0.32 m = 2 spacings)."),
       realKey("blood.rest_density", HS_FIELD(blood.restDensity), between(1, 100000), "kg/m^3",
               "Density at rest (thesis 1000; blood 1060)."),
@@ -155,14 +190,16 @@ std::vector<KeySpec> buildKeyTable() {
               "Dynamic viscosity (thesis 0.04; blood 0.0035; water 0.001)."),
       realKey("blood.xsph", HS_FIELD(blood.xsph), between(0, 0.95), "",
               "XSPH smoothing gamma of thesis eq. 4.11 (0 = off; below 1 for stability)."),
-      intKey("blood.iterations", HS_FIELD(blood.iterations), 1, "", "Density solver iterations per step.", 1000),
+      intKey("blood.iterations", HS_FIELD(blood.iterations), 1, "", "Density solver iterations per step.",
+             1000),
       realKey("blood.relaxation", HS_FIELD(blood.relaxation), between(1e-6, 1000), "",
               "Constraint-force mixing eps of PBF eq. 11, relative to a particle at rest."),
       boolKey("blood.particle_collision", HS_FIELD(blood.particleCollision),
               "Particles keep 2 radii apart (thesis eq. 4.6)."),
       boolKey("blood.tensile_correction", HS_FIELD(blood.tensileCorrection),
               "Artificial pressure s_corr against clumping (PBF eq. 13)."),
-      realKey("blood.tensile_k", HS_FIELD(blood.tensileK), between(0, 1), "", "s_corr strength k (PBF: 0.1)."),
+      realKey("blood.tensile_k", HS_FIELD(blood.tensileK), between(0, 1), "",
+              "s_corr strength k (PBF: 0.1)."),
       intKey("blood.tensile_n", HS_FIELD(blood.tensileN), 1, "", "s_corr exponent n (PBF: 4).", 16),
       realKey("blood.tensile_dq", HS_FIELD(blood.tensileDeltaQ), between(0.01, 0.99), "",
               "s_corr reference distance, as a fraction of the support radius (PBF: 0.1-0.3)."),
@@ -171,15 +208,30 @@ std::vector<KeySpec> buildKeyTable() {
       choiceKey("blood.start", HS_FIELD(blood.start), starts,
                 "Where the blood starts: \"block\" (block_min..block_max), \"chamber\" (the LV cavity) or "
                 "\"vessel\" (the inflow vessel, then the cavity from the base down if it holds more)."),
-      vec3Key("blood.block_min", HS_FIELD(blood.blockMin), m, "Lower corner of the block the blood starts in."),
-      vec3Key("blood.block_max", HS_FIELD(blood.blockMax), m, "Upper corner of that block."),
-      // [container]
+      vec3Key("blood.block_min", HS_FIELD(blood.blockMin), kMetres,
+              "Lower corner of the block the blood starts in."),
+      vec3Key("blood.block_max", HS_FIELD(blood.blockMax), kMetres, "Upper corner of that block."),
+  };
+}
+
+// [container]
+std::vector<KeySpec> containerKeys() {
+  return {
       boolKey("container.enabled", HS_FIELD(container.enabled), "A closed box the blood cannot leave."),
-      vec3Key("container.min", HS_FIELD(container.min), m, "Lower corner of the box."),
-      vec3Key("container.max", HS_FIELD(container.max), m, "Upper corner of the box."),
+      vec3Key("container.min", HS_FIELD(container.min), kMetres, "Lower corner of the box."),
+      vec3Key("container.max", HS_FIELD(container.max), kMetres, "Upper corner of the box."),
       boolKey("container.mesh", HS_FIELD(container.mesh),
               "Walls as a static triangle mesh instead of planes (same box)."),
-      // [circulation]
+  };
+}
+
+// [circulation]
+std::vector<KeySpec> circulationKeys() {
+  const std::vector<std::pair<std::string, cardiac::ValveMode>> valveModes = {
+      {"timing", cardiac::ValveMode::Timing},
+      {"pressure", cardiac::ValveMode::Pressure},
+      {"open", cardiac::ValveMode::Open}};
+  return {
       choiceKey("circulation.valves", HS_FIELD(circulation.valveMode), valveModes,
                 "When the valves open: \"timing\" (mitral in diastole, aortic in systole), \"pressure\" "
                 "(while the pressure before a valve exceeds the pressure after it) or \"open\" (always)."),
@@ -192,10 +244,28 @@ std::vector<KeySpec> buildKeyTable() {
       boolKey("circulation.wall_slip", HS_FIELD(circulation.wallSlip),
               "Blood slides along the wall: pushed out of the face it entered through along that face's "
               "normal (off: back along its path, thesis eq. 4.20)."),
-      // [output]
+  };
+}
+
+// [output]
+std::vector<KeySpec> outputKeys() {
+  return {
       boolKey("output.vtk", HS_FIELD(output.vtk), "Write VTK frames for ParaView."),
       intKey("output.vtk_every", HS_FIELD(output.vtkEvery), 1, "steps", "Time steps between VTK frames."),
   };
+}
+
+// The rows in the order of docs/scenarios.md and of a printed scenario: table by table.
+std::vector<KeySpec> buildKeyTable() {
+  using SectionKeys = std::vector<KeySpec> (*)();
+  std::vector<KeySpec> table;
+  for (const SectionKeys section :
+       {&scenarioKeys, &simulationKeys, &modelKeys, &tissueKeys, &cycleKeys, &cycleSphereKeys,
+        &cycleInconsistentKeys, &bloodKeys, &containerKeys, &circulationKeys, &outputKeys}) {
+    std::vector<KeySpec> rows = section();
+    std::move(rows.begin(), rows.end(), std::back_inserter(table));
+  }
+  return table;
 }
 
 }  // namespace

@@ -35,13 +35,24 @@ Real tensileCorrection(const SphKernels& kernels, const FluidSettings& settings,
   return -settings.tensileK * power;
 }
 
+// The walk of every loop below over the CSR neighbour list of i: pair(k, j, r, r2) for each
+// neighbour j, k its slot in the lists (for per-pair caches), r = x_i - x_j, r2 = |r|^2.
+template <class Pair>
+HS_KERNEL void forNeighbours(const std::vector<Vec3>& positions, const NeighbourLists& lists, Index i,
+                             const Pair& pair) {
+  const Vec3& xi = positions[i];
+  for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k) {
+    const Index j = lists.indices[k];
+    const Vec3 r = xi - positions[j];
+    pair(k, j, r, r.squaredNorm());
+  }
+}
+
 // sum_j W_poly6(|x_i - x_j|) over the list of i, self term W(0) first.
 Real poly6Sum(const std::vector<Vec3>& positions, const NeighbourLists& lists, const SphKernels& kernels, Index i,
               Real selfTerm) {
-  const Vec3& xi = positions[i];
   Real sum = selfTerm;
-  for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k)
-    sum += poly6(kernels, (xi - positions[lists.indices[k]]).squaredNorm());
+  forNeighbours(positions, lists, i, [&](Index, Index, const Vec3&, Real r2) { sum += poly6(kernels, r2); });
   return sum;
 }
 
@@ -126,23 +137,19 @@ void computeLambdas(const std::vector<Vec3>& positions, const NeighbourLists& li
 #pragma omp parallel for schedule(static) num_threads(threads) if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
-    const Vec3& xi = positions[i];
     // PBF eq. 8: grad_{p_i} C_i = (m/rho0) sum_j grad W_ij, grad_{p_j} C_i = -(m/rho0) grad W_ij.
     // One loop for rho_i (PBF eq. 2, self term first) and the gradient sums.
     Real kernelSum = selfTerm;
     Vec3 gradI = Vec3::Zero();
     Real sumSqJ = 0;
-    for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k) {
-      const Index j = lists.indices[k];
-      const Vec3 r = xi - positions[j];
-      const Real r2 = r.squaredNorm();
+    forNeighbours(positions, lists, i, [&](Index k, Index, const Vec3& r, Real r2) {
       kernelSum += poly6Clamped(kernels, r2);
       const Real gs = spikyGradientScale(kernels, std::sqrt(r2));
       if (pairOut) pairOut[k] = gs;
       const Vec3 g = (gradScale * gs) * r;
       gradI += g;
       sumSqJ += g.squaredNorm();
-    }
+    });
     const Real rho = m * kernelSum;
     densities[i] = rho;
     const Real c = rho * invRho0 - Real(1);  // PBF eq. 1
@@ -174,15 +181,11 @@ void computeDensityCorrections(const std::vector<Vec3>& positions, const Neighbo
 #pragma omp parallel for schedule(static) num_threads(threads) if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
-    const Vec3& xi = positions[i];
     const Real li = lambdas[i];
     // PBF eq. 12: dp_i = (m/rho0) sum_j (lambda_i + lambda_j + s_corr) grad W(p_i - p_j).
     Vec3 sum = Vec3::Zero();
     Vec3 push = Vec3::Zero();
-    for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k) {
-      const Index j = lists.indices[k];
-      const Vec3 r = xi - positions[j];
-      const Real r2 = r.squaredNorm();
+    forNeighbours(positions, lists, i, [&](Index k, Index j, const Vec3& r, Real r2) {
       Real weight = li + lambdas[j];
       if (tensile) weight += tensileCorrection(kernels, settings, invWq, r2);
       const Real gs = pairIn ? pairIn[k] : spikyGradientScale(kernels, std::sqrt(r2));
@@ -192,7 +195,7 @@ void computeDensityCorrections(const std::vector<Vec3>& positions, const Neighbo
         const Real d = std::sqrt(r2);
         push += (Real(0.5) * (contact - d) / d) * r;
       }
-    }
+    });
     corrections[i] = scale * sum + push;
   }
 }
@@ -214,20 +217,16 @@ void applyViscosity(const std::vector<Vec3>& positions, const std::vector<Vec3>&
 #pragma omp parallel for schedule(static) num_threads(threads) if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
-    const Vec3& xi = positions[i];
     const Vec3& vi = velocities[i];
     Vec3 xsph = Vec3::Zero();
     Vec3 viscous = Vec3::Zero();
-    for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k) {
-      const Index j = lists.indices[k];
-      const Vec3 r = xi - positions[j];
-      const Real r2 = r.squaredNorm();
+    forNeighbours(positions, lists, i, [&](Index, Index j, const Vec3& r, Real r2) {
       const Vec3 vij = vi - velocities[j];
       // PBF eq. 17: c sum_j (v_j - v_i) W_poly6(x_i - x_j).
       xsph -= poly6(kernels, r2) * vij;
       // Monaghan 2005 eq. 6.13: (v_ij . x_ij)/(|x_ij|^2 + 0.01 h^2) grad W(x_ij).
       viscous += (vij.dot(r) / (r2 + softening)) * spikyGradient(kernels, r, std::sqrt(r2));
-    }
+    });
     newVelocities[i] = vi + c * xsph + laplace * viscous;
   }
 }
@@ -250,11 +249,9 @@ void applyVorticityConfinement(const std::vector<Vec3>& positions, const std::ve
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
     Vec3 omega = Vec3::Zero();
-    for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k) {
-      const Index j = lists.indices[k];
-      const Vec3 r = positions[i] - positions[j];
-      omega += (velocities[i] - velocities[j]).cross(spikyGradient(kernels, r, r.norm()));
-    }
+    forNeighbours(positions, lists, i, [&](Index, Index j, const Vec3& r, Real r2) {
+      omega += (velocities[i] - velocities[j]).cross(spikyGradient(kernels, r, std::sqrt(r2)));
+    });
     vorticity[i] = scale * omega;
   }
   // PBF eq. 16: f = eps (N x omega), N = eta/|eta|, eta = grad |omega| (SPH difference form).
@@ -264,13 +261,11 @@ void applyVorticityConfinement(const std::vector<Vec3>& positions, const std::ve
     const Index i = subset[std::size_t(s)];
     const Real wi = vorticity[i].norm();
     Vec3 eta = Vec3::Zero();
-    for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k) {
-      const Index j = lists.indices[k];
-      const Vec3 r = positions[i] - positions[j];
+    forNeighbours(positions, lists, i, [&](Index, Index j, const Vec3& r, Real r2) {
       // grad |omega| at i ~ sum_j (m/rho0)(|omega_j| - |omega_i|) grad_i W(x_ij); grad_i W
       // points from i towards j, so a larger |omega_j| turns eta towards j.
-      eta += (vorticity[j].norm() - wi) * spikyGradient(kernels, r, r.norm());
-    }
+      eta += (vorticity[j].norm() - wi) * spikyGradient(kernels, r, std::sqrt(r2));
+    });
     eta *= scale;
     const Real len = eta.norm();
     Vec3 v = velocities[i];

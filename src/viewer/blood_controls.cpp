@@ -3,6 +3,10 @@
 #include <imgui.h>
 
 #include <array>
+#include <cstddef>
+#include <span>
+
+#include "viewer/panel_widgets.h"
 
 namespace hs::viewer {
 namespace {
@@ -10,32 +14,41 @@ namespace {
 using Start = cardiac::BloodSettings::Start;
 using cardiac::ValveMode;
 
-void tooltip(const char* text) {
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
-}
+// A value of a combo box below and the name it shows.
+template <class E>
+struct Choice {
+  E value;
+  const char* name;
+};
 
-const char* startName(Start start) {
-  switch (start) {
-    case Start::Vessel:
-      return "inflow vessel";
-    case Start::Chamber:
-      return "chamber";
-    case Start::Block:
-      return "block";
-  }
+// Every start has a name; the first two are offered (a block needs corners the panel has no
+// controls for, but a scenario may start there).
+constexpr std::array<Choice<Start>, 3> kStarts = {
+    {{Start::Vessel, "inflow vessel"}, {Start::Chamber, "chamber"}, {Start::Block, "block"}}};
+constexpr std::size_t kOfferedStarts = 2;
+constexpr std::array<Choice<ValveMode>, 3> kValveModes = {
+    {{ValveMode::Timing, "timing"}, {ValveMode::Pressure, "pressure"}, {ValveMode::Open, "open"}}};
+
+template <class E>
+const char* nameOf(std::span<const Choice<E>> choices, E value) {
+  for (const Choice<E>& c : choices)
+    if (c.value == value) return c.name;
   return "?";
 }
 
-const char* valveName(ValveMode mode) {
-  switch (mode) {
-    case ValveMode::Timing:
-      return "timing";
-    case ValveMode::Pressure:
-      return "pressure";
-    case ValveMode::Open:
-      return "open";
+// A combo box showing `value`'s name and offering `offered`; picking another value sets it and
+// `changed`.
+template <class E>
+void choiceCombo(const char* label, std::span<const Choice<E>> named, std::span<const Choice<E>> offered,
+                 E& value, bool& changed) {
+  if (ImGui::BeginCombo(label, nameOf(named, value))) {
+    for (const Choice<E>& c : offered)
+      if (ImGui::Selectable(c.name, c.value == value) && c.value != value) {
+        value = c.value;
+        changed = true;
+      }
+    ImGui::EndCombo();
   }
-  return "?";
 }
 
 }  // namespace
@@ -73,15 +86,8 @@ void drawBloodSection(BloodControls& c, bool hasHeart) {
       "Blood particles, each a small parcel of blood. More: finer flow, slower simulation.\nApplied on "
       "release, restarting from t = 0. A start region too small for them is reported below.");
   if (!hasHeart) return;
-  constexpr std::array kStarts = {Start::Vessel, Start::Chamber};
-  if (ImGui::BeginCombo("blood start", startName(c.start))) {
-    for (const Start s : kStarts)
-      if (ImGui::Selectable(startName(s), s == c.start) && s != c.start) {
-        c.start = s;
-        c.changed = true;
-      }
-    ImGui::EndCombo();
-  }
+  const std::span<const Choice<Start>> starts(kStarts);
+  choiceCombo("blood start", starts, starts.first(kOfferedStarts), c.start, c.changed);
   tooltip(
       "Where the blood is at t = 0: in the inflow vessel (it fills the ventricle through the mitral "
       "valve) or already in the chamber. Restarts from t = 0.");
@@ -89,15 +95,8 @@ void drawBloodSection(BloodControls& c, bool hasHeart) {
   tooltip(
       "On: the blood pushes the heart wall back (the wall feels the blood's pressure).\nOff: the wall "
       "moves the blood but does not feel it, as in the thesis. Restarts from t = 0.");
-  constexpr std::array kModes = {ValveMode::Timing, ValveMode::Pressure, ValveMode::Open};
-  if (ImGui::BeginCombo("valves", valveName(c.valveMode))) {
-    for (const ValveMode m : kModes)
-      if (ImGui::Selectable(valveName(m), m == c.valveMode) && m != c.valveMode) {
-        c.valveMode = m;
-        c.changed = true;
-      }
-    ImGui::EndCombo();
-  }
+  const std::span<const Choice<ValveMode>> modes(kValveModes);
+  choiceCombo("valves", modes, modes, c.valveMode, c.changed);
   tooltip(
       "When the valves open.\ntiming: the mitral valve in diastole, the aortic valve in systole (the "
       "thesis).\npressure: a valve opens while the pressure before it is higher than after it, as real "

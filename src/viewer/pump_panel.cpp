@@ -5,14 +5,11 @@
 #include <algorithm>
 #include <string>
 
+#include "viewer/panel_widgets.h"
 #include "viewer/plot_widget.h"
 
 namespace hs::viewer {
 namespace {
-
-void tooltip(const std::string& text) {
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text.c_str());
-}
 
 constexpr ImU32 kVolumeColour = IM_COL32(170, 30, 45, 255);
 constexpr ImU32 kMitralColour = IM_COL32(40, 110, 220, 255);
@@ -212,22 +209,15 @@ void plots(PumpControls& c, const PumpStatus& s, const PlotHistory& history) {
 void drawPumpPanel(PumpControls& controls, const PumpStatus& status, const PlotHistory& history,
                    int windowWidth, int windowHeight) {
   if (!status.hasHeart) return;
-  ImGui::SetNextWindowPos(ImVec2(float(windowWidth) - kPumpPanelWidth, 0), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(kPumpPanelWidth, float(windowHeight)), ImGuiCond_Always);
-  ImGui::Begin("pump", nullptr,
-               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                   ImGuiWindowFlags_NoTitleBar);
-  ImGui::PushItemWidth(-90);
-  ImGui::TextUnformatted("Heart as a pump");
-  ImGui::Separator();
+  beginSidePanel("pump", "Heart as a pump", float(windowWidth) - kPumpPanelWidth, kPumpPanelWidth,
+                 windowHeight);
   phaseAndValves(status);
   ImGui::Spacing();
   beatTable(status);
   ImGui::Spacing();
   ImGui::Separator();
   plots(controls, status, history);
-  ImGui::PopItemWidth();
-  ImGui::End();
+  endSidePanel();
 }
 
 }  // namespace hs::viewer

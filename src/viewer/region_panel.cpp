@@ -9,15 +9,12 @@
 
 #include "render/scene.h"
 #include "viewer/aha_bullseye.h"
+#include "viewer/panel_widgets.h"
 
 namespace hs::viewer {
 namespace {
 
 constexpr float kRadians = float(M_PI) / 180.0f;
-
-void tooltip(const char* text) {
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
-}
 
 ImU32 colour(const render::Vec3f& c, float alpha = 1) {
   return ImGui::GetColorU32(ImVec4(c.x(), c.y(), c.z(), alpha));

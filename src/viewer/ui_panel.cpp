@@ -6,13 +6,10 @@
 #include <cstdio>
 
 #include "render/scene.h"
+#include "viewer/panel_widgets.h"
 
 namespace hs::viewer {
 namespace {
-
-void tooltip(const char* text) {
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
-}
 
 // ImGui 1.86 has no SeparatorText.
 void sectionTitle(const char* title) {
@@ -175,14 +172,7 @@ std::string realTimeWarning(const ViewerStatus& status) {
 
 void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
                       const std::vector<ScenarioChoice>& scenarios, int windowHeight) {
-  ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, float(windowHeight)), ImGuiCond_Always);
-  ImGui::Begin("heartsim", nullptr,
-               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                   ImGuiWindowFlags_NoTitleBar);
-  ImGui::PushItemWidth(-90);
-  ImGui::TextUnformatted("heartsim viewer");
-  ImGui::Separator();
+  beginSidePanel("heartsim", "heartsim viewer", 0, kPanelWidth, windowHeight);
   simulationSection(controls, status);
   ImGui::Spacing();
   sectionTitle("Scenario");
@@ -205,8 +195,7 @@ void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
     ImGui::Separator();
     ImGui::TextWrapped("%s", status.message.c_str());
   }
-  ImGui::PopItemWidth();
-  ImGui::End();
+  endSidePanel();
 }
 
 void drawColourKey(const ViewerStatus& status, float leftEdge, int windowHeight) {
