@@ -79,9 +79,8 @@ void NeighbourGrid::build(const std::vector<Vec3>& positions, Real cellSize) {
 
   // Reserve for the largest layout this particle count can choose, so that rebuilding with the
   // same count never reallocates, whichever layout the new positions need.
-  const int threads = std::max(1, m_settings.threads);
   if (n != m_reservedFor || m_grid.offsets().capacity() == 0) {
-    m_grid.reserve(std::max(denseLimit, buckets), n, threads);
+    m_grid.reserve(std::max(denseLimit, buckets), n);
     m_cellOf.reserve(n);
     m_sortedPositions.reserve(n);
     m_reservedFor = n;
@@ -89,18 +88,17 @@ void NeighbourGrid::build(const std::vector<Vec3>& positions, Real cellSize) {
   m_cellOf.resize(n);
   m_sortedPositions.resize(n);
 
-  // 1. Cell of each particle.
-  const int teams = CellGrid::teamsFor(n, threads);
-  const std::int64_t count = std::int64_t(n);
-#pragma omp parallel for num_threads(teams) if (teams > 1)
-  for (std::int64_t i = 0; i < count; ++i) m_cellOf[std::size_t(i)] = keyOf(positions[std::size_t(i)]);
+  // 1. Cell of each particle. The build stays on one thread: with the keys, the sort and the
+  //    gather below in parallel, 100k particles on 2 threads of this shared machine took
+  //    85-88 ms CPU against 67-78 ms serial (hs_micro_bench), the barriers costing more than
+  //    the O(N) work they split.
+  for (std::size_t i = 0; i < n; ++i) m_cellOf[i] = keyOf(positions[i]);
   // 2. Counting sort: each cell lists its particles in increasing index order.
   [[maybe_unused]] const bool fits =
-      m_grid.bin(n, cellCount, threads, [this](std::size_t i, auto&& emit) { emit(m_cellOf[i]); });
+      m_grid.bin(n, cellCount, 1, [this](std::size_t i, auto&& emit) { emit(m_cellOf[i]); });
   assert(fits);  // n < kNoParticle entries
   // 3. Positions in cell order, so that queries stream through memory.
-#pragma omp parallel for num_threads(teams) if (teams > 1)
-  for (std::int64_t k = 0; k < count; ++k) m_sortedPositions[std::size_t(k)] = positions[m_grid.item(Index(k))];
+  for (std::size_t k = 0; k < n; ++k) m_sortedPositions[k] = positions[m_grid.item(Index(k))];
 }
 
 Index NeighbourGrid::keyOf(const Vec3& x) const {
