@@ -1,3 +1,6 @@
+// The static mesh collider's collision response (mesh_collider.h): the mesh's checks and
+// preprocessing, the tunnelling test and the contact push-outs, run over the candidates of its
+// triangle grid (mesh_collider_grid.cpp) or, as the tests' reference, over every triangle.
 #include "pbd/mesh_collider.h"
 
 #include <algorithm>
@@ -35,7 +38,6 @@ namespace {
 
 using detail::ColliderGeometry;
 using detail::ColliderTriangle;
-using detail::TriangleGrid;
 
 constexpr Real kEps = std::numeric_limits<Real>::epsilon();
 // Rounding allowance for heights and positions, relative to the coordinates involved.
@@ -49,9 +51,6 @@ constexpr Real kDegenerate = 16 * kEps;
 // Pushes per call: a corner of k faces needs k; a sharp concave wedge of angle theta converges
 // like cos(theta)^n (alternating projections), so 16 leave < 1e-4 r for 60 degrees.
 constexpr int kMaxContactIterations = 16;
-constexpr int kMaxSegmentPieces = 64;
-constexpr std::int64_t kMaxQuickRows = 16;  // rows of cells the empty-neighbourhood test looks at
-constexpr double kMinCellBudget = 65536, kCellsPerTriangle = 64;
 constexpr Index kNone = ~Index(0);
 
 Real maxAbs(const Vec3& v) { return v.cwiseAbs().maxCoeff(); }
@@ -181,116 +180,6 @@ Vec3 collideWith(const ColliderGeometry& geometry, const Candidates& candidates,
   return x;
 }
 
-// Ericson 5.2.3, plane against box: the box [lo, hi] clipped to the triangle's widened bounding
-// box touches the slab |n . (x - a)| <= margin iff |n . (centre - a)| <= extents . |n| + margin.
-bool planeTouchesBox(const ColliderTriangle& t, const double lo[3], const double hi[3], double margin) {
-  double s = 0, r = 0;
-  for (int a = 0; a < 3; ++a) {
-    const double l = std::max(lo[a], double(t.boxLo[a])), h = std::min(hi[a], double(t.boxHi[a]));
-    if (!(l <= h)) return false;
-    const double n = double(t.normal[a]);
-    s += n * (0.5 * (l + h) - double(t.a[a]));
-    r += 0.5 * (h - l) * std::abs(n);
-  }
-  return std::abs(s) <= r + margin;
-}
-
-struct CellBox {
-  std::int64_t lo[3], hi[3];
-};
-
-// Cells overlapping [lo, hi]; false if none. The cell coordinate floor((x - origin) / cell) is
-// monotone in x, so every point of the box falls in a cell of the range.
-bool cellRange(const TriangleGrid& g, const double lo[3], const double hi[3], CellBox& r) {
-  if (g.cellStart.empty()) return false;
-  for (int a = 0; a < 3; ++a) {
-    const double tl = (lo[a] - g.origin[a]) * g.invCell, th = (hi[a] - g.origin[a]) * g.invCell;
-    const double top = double(g.dims[a] - 1);
-    if (!(th >= 0) || !(tl < top + 1) || !(tl <= th)) return false;
-    r.lo[a] = tl <= 0 ? 0 : std::int64_t(tl);
-    r.hi[a] = std::int64_t(std::min(th, top));
-  }
-  return true;
-}
-
-template <class F>
-void forEachInCells(const TriangleGrid& g, const CellBox& r, F& f) {
-  for (std::int64_t z = r.lo[2]; z <= r.hi[2]; ++z)
-    for (std::int64_t y = r.lo[1]; y <= r.hi[1]; ++y) {
-      // Cells (x0..x1, y, z) are consecutive: one contiguous run of entries per row.
-      const std::int64_t row = (z * g.dims[1] + y) * g.dims[0];
-      const Index end = g.cellStart[std::size_t(row + r.hi[0] + 1)];
-      for (Index e = g.cellStart[std::size_t(row + r.lo[0])]; e < end; ++e) f(g.entries[e]);
-    }
-}
-
-struct GridCandidates {
-  const TriangleGrid& grid;
-
-  // False only if every cell overlapping [lo, hi] is empty; true without looking for large boxes.
-  bool mayHaveAny(const Vec3& lo, const Vec3& hi) const {
-    const double l[3] = {double(lo[0]), double(lo[1]), double(lo[2])};
-    const double h[3] = {double(hi[0]), double(hi[1]), double(hi[2])};
-    CellBox r;
-    if (!cellRange(grid, l, h, r)) return false;
-    if ((r.hi[1] - r.lo[1] + 1) * (r.hi[2] - r.lo[2] + 1) > kMaxQuickRows) return true;
-    for (std::int64_t z = r.lo[2]; z <= r.hi[2]; ++z)
-      for (std::int64_t y = r.lo[1]; y <= r.hi[1]; ++y) {
-        const std::int64_t row = (z * grid.dims[1] + y) * grid.dims[0];
-        if (grid.cellStart[std::size_t(row + r.hi[0] + 1)] != grid.cellStart[std::size_t(row + r.lo[0])])
-          return true;
-      }
-    return false;
-  }
-
-  template <class F>
-  void inBox(const Vec3& lo, const Vec3& hi, F&& f) const {
-    const double l[3] = {double(lo[0]), double(lo[1]), double(lo[2])};
-    const double h[3] = {double(hi[0]), double(hi[1]), double(hi[2])};
-    CellBox r;
-    if (cellRange(grid, l, h, r)) forEachInCells(grid, r, f);
-  }
-
-  template <class F>
-  void alongSegment(const Vec3& p, const Vec3& q, Real slack, const Real& best, F&& f) const {
-    // Clip to the grid's box widened by a cell, so rounding cannot matter (slab method,
-    // Ericson 5.3.3): no triangle lies outside it.
-    double t0 = 0, t1 = 1, d[3];
-    for (int a = 0; a < 3; ++a) {
-      d[a] = double(q[a]) - double(p[a]);
-      const double lo = grid.origin[a] - grid.cellSize;
-      const double hi = grid.origin[a] + double(grid.dims[a] + 1) * grid.cellSize;
-      if (d[a] == 0) {
-        if (double(p[a]) < lo || double(p[a]) > hi) return;
-        continue;
-      }
-      double ta = (lo - double(p[a])) / d[a], tb = (hi - double(p[a])) / d[a];
-      if (ta > tb) std::swap(ta, tb);
-      t0 = std::max(t0, ta);
-      t1 = std::min(t1, tb);
-      if (!(t0 <= t1)) return;
-    }
-    // Pieces about a cell long: the cells of each piece's box, not of the whole segment's box
-    // (mostly empty space for a long diagonal move). Pieces go in order along the segment, so
-    // once a crossing is found no later piece can hold an earlier one.
-    const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) * (t1 - t0);
-    const int pieces = int(std::clamp(std::ceil(length / grid.cellSize), 1.0, double(kMaxSegmentPieces)));
-    for (int k = 0; k < pieces; ++k) {
-      const double s0 = t0 + (t1 - t0) * k / pieces,
-                   s1 = k + 1 == pieces ? t1 : t0 + (t1 - t0) * (k + 1) / pieces;
-      double l[3], h[3];
-      for (int a = 0; a < 3; ++a) {
-        const double x0 = double(p[a]) + s0 * d[a], x1 = double(p[a]) + s1 * d[a];
-        l[a] = std::min(x0, x1) - double(slack);
-        h[a] = std::max(x0, x1) + double(slack);
-      }
-      CellBox r;
-      if (cellRange(grid, l, h, r)) forEachInCells(grid, r, f);
-      if (double(best) <= s1) return;
-    }
-  }
-};
-
 struct AllCandidates {
   Index count;
 
@@ -305,70 +194,6 @@ struct AllCandidates {
     for (Index k = 0; k < count; ++k) f(k);
   }
 };
-
-// Grid over the triangles' widened boxes; a triangle is entered in each cell of its box that its
-// plane passes through (counting sort: count, prefix sum, fill, in triangle order).
-TriangleGrid buildGrid(const ColliderGeometry& geometry, Real requestedCellSize) {
-  TriangleGrid g;
-  const auto& triangles = geometry.triangles;
-  if (triangles.empty()) return g;
-  std::array<double, 3> hi;
-  g.origin.fill(std::numeric_limits<double>::infinity());
-  hi.fill(-std::numeric_limits<double>::infinity());
-  for (const ColliderTriangle& t : triangles)
-    for (int a = 0; a < 3; ++a) {
-      g.origin[a] = std::min(g.origin[a], double(t.boxLo[a]));
-      hi[a] = std::max(hi[a], double(t.boxHi[a]));
-    }
-  // Enlarge the cells while the grid would need more than the budget (a big, mostly empty
-  // container with small particles).
-  const double budget = std::max(kMinCellBudget, kCellsPerTriangle * double(triangles.size()));
-  g.cellSize = double(requestedCellSize);
-  double cells = 0, dims[3];
-  for (;;) {
-    g.invCell = 1.0 / g.cellSize;
-    cells = 1;
-    for (int a = 0; a < 3; ++a) cells *= dims[a] = std::floor((hi[a] - g.origin[a]) * g.invCell) + 1;
-    if (cells <= budget) break;
-    g.cellSize *= std::cbrt(cells / budget) * 1.01;
-  }
-  for (int a = 0; a < 3; ++a) g.dims[a] = std::int64_t(dims[a]);
-
-  const double pad = 1e-6 * g.cellSize;  // covers rounding of the cell coordinates
-  auto forEachCellOf = [&](const ColliderTriangle& t, auto&& f) {
-    const double l[3] = {double(t.boxLo[0]), double(t.boxLo[1]), double(t.boxLo[2])};
-    const double h[3] = {double(t.boxHi[0]), double(t.boxHi[1]), double(t.boxHi[2])};
-    CellBox r;
-    if (!cellRange(g, l, h, r)) return;
-    for (std::int64_t z = r.lo[2]; z <= r.hi[2]; ++z)
-      for (std::int64_t y = r.lo[1]; y <= r.hi[1]; ++y)
-        for (std::int64_t x = r.lo[0]; x <= r.hi[0]; ++x) {
-          const std::int64_t c[3] = {x, y, z};
-          double cl[3], ch[3];
-          for (int a = 0; a < 3; ++a) {
-            cl[a] = g.origin[a] + double(c[a]) * g.cellSize - pad;
-            ch[a] = g.origin[a] + double(c[a] + 1) * g.cellSize + pad;
-          }
-          if (planeTouchesBox(t, cl, ch, 2 * double(t.slack)))
-            f(std::size_t((z * g.dims[1] + y) * g.dims[0] + x));
-        }
-  };
-  g.cellStart.assign(std::size_t(cells) + 1, 0);
-  for (const ColliderTriangle& t : triangles)
-    forEachCellOf(t, [&](std::size_t cell) { ++g.cellStart[cell + 1]; });
-  std::uint64_t total = 0;
-  for (Index& s : g.cellStart) {
-    total += s;
-    if (total >= std::uint64_t(kNone))
-      throw std::length_error("StaticMeshCollider: too many (cell, triangle) pairs");
-    s = Index(total);
-  }
-  g.entries.resize(std::size_t(total));
-  std::vector<Index> cursor(g.cellStart.begin(), g.cellStart.end() - 1);
-  for (Index k = 0; k < Index(triangles.size()); ++k)
-    forEachCellOf(triangles[k], [&](std::size_t cell) { g.entries[cursor[cell]++] = k; });
-  return g;
-}
 
 }  // namespace
 
@@ -432,23 +257,21 @@ StaticMeshCollider::StaticMeshCollider(std::vector<Vec3> vertices, std::vector<T
   m_geometry = detail::buildColliderGeometry(m_vertices, m_triangles);
   m_slotOf.assign(m_triangles.size(), kNone);
   for (Index k = 0; k < Index(m_geometry.triangles.size()); ++k) m_slotOf[m_geometry.triangles[k].id] = k;
-  m_grid = buildGrid(m_geometry, cellSize);
+  m_grid = detail::TriangleGrid(m_geometry, cellSize);
 }
 
 Vec3 StaticMeshCollider::collide(const Vec3& previous, const Vec3& predicted, Real radius) const {
-  return collideWith(m_geometry, GridCandidates{m_grid}, previous, predicted, radius);
+  return collideWith(m_geometry, m_grid, previous, predicted, radius);
 }
 
 void StaticMeshCollider::candidateTriangles(const Vec3& lo, const Vec3& hi, std::vector<Index>& out) const {
   out.clear();
   const double l[3] = {double(lo[0]), double(lo[1]), double(lo[2])};
   const double h[3] = {double(hi[0]), double(hi[1]), double(hi[2])};
-  CellBox r;
-  auto keep = [&](Index k) {
+  m_grid.inBox(lo, hi, [&](Index k) {
     const ColliderTriangle& t = m_geometry.triangles[k];
-    if (planeTouchesBox(t, l, h, double(t.slack))) out.push_back(t.id);
-  };
-  if (cellRange(m_grid, l, h, r)) forEachInCells(m_grid, r, keep);
+    if (detail::planeTouchesBox(t, l, h, double(t.slack))) out.push_back(t.id);
+  });
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
 }
@@ -458,7 +281,7 @@ bool StaticMeshCollider::triangleMayTouchBox(Index triangle, const Vec3& lo, con
   const ColliderTriangle& t = m_geometry.triangles[m_slotOf[triangle]];
   const double l[3] = {double(lo[0]), double(lo[1]), double(lo[2])};
   const double h[3] = {double(hi[0]), double(hi[1]), double(hi[2])};
-  return planeTouchesBox(t, l, h, double(t.slack));
+  return detail::planeTouchesBox(t, l, h, double(t.slack));
 }
 
 Vec3 collideBruteForce(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles,

@@ -18,14 +18,11 @@
 // this is the side the particle came from; unlike the side of `previous` alone it is also right
 // for a particle that went around a free edge (a valve leaflet's tip) during the step.
 //
-// Acceleration: a uniform grid (cell edge about 2-4 particle radii) over the triangles, stored
-// as compressed rows with a counting sort like NeighbourGrid. A triangle is entered in the cells
-// its bounding box covers that its plane passes through (Ericson 5.2.3, plane against box), so a
-// large tilted wall does not fill the whole volume of its bounding box.
-#include <array>
-#include <cstdint>
+// Acceleration: a uniform grid over the triangles (mesh_collider_grid.h). This file's source
+// holds the collision response; the grid offers it candidates.
 #include <vector>
 
+#include "pbd/mesh_collider_grid.h"
 #include "pbd/tet_mesh.h"
 #include "pbd/types.h"
 
@@ -52,17 +49,6 @@ struct ColliderGeometry {
 // triangles with non-zero area.
 ColliderGeometry buildColliderGeometry(const std::vector<Vec3>& vertices,
                                        const std::vector<Triangle>& triangles);
-
-// Dense grid, cells in x-fastest order; cell k holds entries[cellStart[k] .. cellStart[k+1]),
-// positions in ColliderGeometry::triangles, ascending.
-struct TriangleGrid {
-  std::array<double, 3> origin{0, 0, 0};
-  double cellSize = 1;
-  double invCell = 1;
-  std::array<std::int64_t, 3> dims{0, 0, 0};
-  std::vector<Index> cellStart;
-  std::vector<Index> entries;
-};
 
 }  // namespace detail
 
@@ -96,9 +82,9 @@ class StaticMeshCollider {
   const std::vector<Vec3>& vertices() const { return m_vertices; }
   const std::vector<Triangle>& triangles() const { return m_triangles; }
   std::size_t activeTriangleCount() const { return m_geometry.triangles.size(); }  // non-degenerate
-  Real cellSize() const { return Real(m_grid.cellSize); }  // as used (>= the requested one)
-  std::size_t cellCount() const { return m_grid.cellStart.empty() ? 0 : m_grid.cellStart.size() - 1; }
-  std::size_t entryCount() const { return m_grid.entries.size(); }  // (cell, triangle) pairs
+  Real cellSize() const { return Real(m_grid.cellSize()); }  // as used (>= the requested one)
+  std::size_t cellCount() const { return m_grid.cellCount(); }
+  std::size_t entryCount() const { return m_grid.entryCount(); }  // (cell, triangle) pairs
 
  private:
   std::vector<Vec3> m_vertices;

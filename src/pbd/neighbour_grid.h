@@ -27,6 +27,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "pbd/cell_grid.h"
 #include "pbd/types.h"
 
 namespace hs::pbd {
@@ -87,11 +88,11 @@ class NeighbourGrid {
   Index particleCount() const { return m_count; }
   Real cellSize() const { return m_cellSize; }
   bool hashed() const { return m_hashed; }
-  Index cellCount() const { return m_cellStart.empty() ? 0 : Index(m_cellStart.size() - 1); }
+  Index cellCount() const { return Index(m_grid.cellCount()); }
 
   // Runtime buffers, exposed for tests (allocation reuse) and diagnostics.
-  const std::vector<Index>& cellStarts() const { return m_cellStart; }
-  const std::vector<Index>& sortedIndices() const { return m_sorted; }
+  const std::vector<Index>& cellStarts() const { return m_grid.offsets(); }
+  const std::vector<Index>& sortedIndices() const { return m_grid.items(); }
   const std::vector<Index>& particleCells() const { return m_cellOf; }
   const std::vector<Vec3>& sortedPositions() const { return m_sortedPositions; }
 
@@ -105,7 +106,7 @@ class NeighbourGrid {
   Coord cellCoord(const Vec3& x) const {
     Coord c;
     for (int a = 0; a < 3; ++a) {
-      double t = (double(x[a]) - m_origin[a]) * m_invCell;
+      double t = m_cells.axisCoord(double(x[a]), a);
       if (!(t >= -kMaxCoord)) t = -kMaxCoord;  // also NaN: such a particle has no neighbours
       if (t > kMaxCoord) t = kMaxCoord;
       c[a] = std::int64_t(std::floor(t));
@@ -122,10 +123,13 @@ class NeighbourGrid {
     return Index(h & m_bucketMask);
   }
 
+  // The cell (dense layout) or bucket (hashed) of a particle at x.
+  Index keyOf(const Vec3& x) const;
+
   template <class F>
   void scan(Index begin, Index end, const Vec3& x, Real r2, Index skip, F& f) const {
     for (Index k = begin; k < end; ++k) {
-      const Index j = m_sorted[k];
+      const Index j = m_grid.item(k);
       if (j == skip) continue;
       const Vec3 r = x - m_sortedPositions[k];
       const Real d2 = r.squaredNorm();
@@ -139,8 +143,9 @@ class NeighbourGrid {
   template <class F>
   void forEachCandidateRun(Index k, F&& run) const {
     if (!m_hashed) {
-      const auto key = std::int64_t(m_cellOf[m_sorted[k]]);
-      const Coord c{key % m_dims[0], (key / m_dims[0]) % m_dims[1], key / (m_dims[0] * m_dims[1])};
+      const auto key = std::int64_t(m_cellOf[m_grid.item(k)]);
+      const Coord& d = m_cells.dims;
+      const Coord c{key % d[0], (key / d[0]) % d[1], key / (d[0] * d[1])};
       forEachRunAround(c, run);
     } else {
       forEachRunAround(cellCoord(m_sortedPositions[k]), run);
@@ -153,15 +158,13 @@ class NeighbourGrid {
   template <class F>
   void forEachRunAround(const Coord& c, F& run) const {
     if (!m_hashed) {
-      const std::int64_t x0 = std::max<std::int64_t>(c[0] - 1, 0), x1 = std::min(c[0] + 1, m_dims[0] - 1);
-      const std::int64_t y0 = std::max<std::int64_t>(c[1] - 1, 0), y1 = std::min(c[1] + 1, m_dims[1] - 1);
-      const std::int64_t z0 = std::max<std::int64_t>(c[2] - 1, 0), z1 = std::min(c[2] + 1, m_dims[2] - 1);
-      if (x0 > x1) return;
-      for (std::int64_t z = z0; z <= z1; ++z)
-        for (std::int64_t y = y0; y <= y1; ++y) {
-          const std::int64_t row = (z * m_dims[1] + y) * m_dims[0];
-          run(m_cellStart[std::size_t(row + x0)], m_cellStart[std::size_t(row + x1 + 1)]);
-        }
+      CellBox r;
+      for (std::size_t a = 0; a < 3; ++a) {
+        r.lo[a] = std::max<std::int64_t>(c[a] - 1, 0);
+        r.hi[a] = std::min(c[a] + 1, m_cells.dims[a] - 1);
+      }
+      if (r.lo[0] > r.hi[0]) return;
+      m_grid.forEachRun(m_cells, r, run);
       return;
     }
     std::array<Index, 27> buckets;
@@ -171,7 +174,7 @@ class NeighbourGrid {
         for (std::int64_t dx = -1; dx <= 1; ++dx) buckets[std::size_t(n++)] = bucketOf(c[0] + dx, c[1] + dy, c[2] + dz);
     std::sort(buckets.begin(), buckets.end());
     const auto last = std::unique(buckets.begin(), buckets.end());
-    for (auto b = buckets.begin(); b != last; ++b) run(m_cellStart[*b], m_cellStart[*b + 1]);
+    for (auto b = buckets.begin(); b != last; ++b) run(m_grid.begin(*b), m_grid.end(*b));
   }
 
   template <class F>
@@ -188,15 +191,12 @@ class NeighbourGrid {
   // Runtime state of the last build.
   Index m_count = 0;
   Real m_cellSize = 0;
-  std::array<double, 3> m_origin{0, 0, 0};
-  double m_invCell = 1;                 // 1 / (cellSize * (1 + safety margin)), see build()
-  Coord m_dims{0, 0, 0};                // dense layout only
+  CellIndexing m_cells;                 // edge cellSize * (1 + safety margin), see build(); dims: dense layout
   bool m_hashed = false;
   std::uint64_t m_bucketMask = 0;       // hashed layout only
-  std::vector<Index> m_cellStart;       // cells (or buckets) + 1: [begin, end) into m_sorted
-  std::vector<Index> m_sorted;          // particle indices by cell; ascending within a cell
+  CellGrid m_grid;                      // particle indices by cell (or bucket); ascending within a cell
   std::vector<Index> m_cellOf;          // cell (or bucket) of each particle
-  std::vector<Vec3> m_sortedPositions;  // positions in the order of m_sorted
+  std::vector<Vec3> m_sortedPositions;  // positions in the order of m_grid.items()
   std::size_t m_reservedFor = 0;        // particle count the cell buffer was reserved for
   std::vector<std::vector<Index>> m_threadLists;  // per-thread buffers of buildSlotNeighbourLists
 };

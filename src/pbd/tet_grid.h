@@ -8,9 +8,9 @@
 //  * Cell edge = cellSizeFactor x the mean bounding-box extent (largest side) of the tets. A
 //    tet no larger than a cell overlaps at most 2 x 2 x 2 cells, so a mesh of similar tets costs
 //    about 8 entries per tet and a query filters a handful of boxes.
-//  * The tets move every step, so the grid is rebuilt every step: counting sort (histogram,
-//    prefix sum, scatter) over the cells, O(tets + cells + entries), into buffers reused
-//    between builds. With the same tet count no build allocates once the entry buffer has
+//  * The tets move every step, so the grid is rebuilt every step: the counting sort of the
+//    shared CellGrid (cell_grid.h), O(tets + cells + entries), into buffers reused between
+//    builds. With the same tet count no build allocates once the entry buffer has
 //    reached its working size (it grows with 25% headroom).
 //  * The number of cells is capped at maxCellsPerTet x tets + 64: if a few tets fly apart and
 //    the bounds explode, the cells grow instead of the memory. A query is still exact, it just
@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "pbd/cell_grid.h"
 #include "pbd/tet_mesh.h"
 #include "pbd/types.h"
 
@@ -34,6 +35,7 @@ struct TetGridSettings {
   Real cellSizeFactor = 1;  // cell edge = factor x mean bounding-box extent of the tets
   Real padding = 0;         // every bounding box grows by this distance on all sides (>= 0)
   Real maxCellsPerTet = 8;  // cap on the dense cell count (see above)
+  int threads = 1;          // OpenMP threads for build() (large meshes only; same grid for any count)
 };
 
 class TetGrid {
@@ -53,8 +55,8 @@ class TetGrid {
   void forEachCandidate(const Vec3& p, F&& f) const {
     std::size_t cell;
     if (!cellOf(p, cell)) return;
-    for (Index k = m_cellStart[cell], end = m_cellStart[cell + 1]; k < end; ++k) {
-      const Index t = m_entries[k];
+    for (Index k = m_grid.begin(cell), end = m_grid.end(cell); k < end; ++k) {
+      const Index t = m_grid.item(k);
       const Vec3& lo = m_lo[t];
       const Vec3& hi = m_hi[t];
       if (lo[0] <= p[0] && p[0] <= hi[0] && lo[1] <= p[1] && p[1] <= hi[1] && lo[2] <= p[2] && p[2] <= hi[2])
@@ -73,42 +75,37 @@ class TetGrid {
 
   Index tetCount() const { return Index(m_lo.size()); }
   Real cellSize() const { return m_cellSize; }
-  std::size_t cellCount() const { return m_cellStart.empty() ? 0 : m_cellStart.size() - 1; }
-  std::size_t entryCount() const { return m_entryCount; }
+  std::size_t cellCount() const { return m_grid.cellCount(); }
+  std::size_t entryCount() const { return m_grid.entryCount(); }
 
   // Runtime buffers, exposed for tests (allocation reuse) and diagnostics.
-  const std::vector<Index>& cellStarts() const { return m_cellStart; }
-  const std::vector<Index>& entries() const { return m_entries; }
+  const std::vector<Index>& cellStarts() const { return m_grid.offsets(); }
+  const std::vector<Index>& entries() const { return m_grid.items(); }
 
  private:
-  // Cell coordinate along axis a of coordinate v: the one expression used for boxes and points.
-  double axisCoord(Real v, int a) const { return (double(v) - m_origin[std::size_t(a)]) * m_invCell; }
+  // Overall bounds, summed largest extent and count of the finite boxes.
+  struct BoxStats {
+    std::array<double, 3> lo, hi;
+    double extentSum = 0;
+    std::size_t finite = 0;
+  };
 
-  bool cellOf(const Vec3& p, std::size_t& cell) const {
-    if (m_entryCount == 0) return false;
-    std::size_t c[3];
-    for (int a = 0; a < 3; ++a) {
-      const double t = axisCoord(p[a], a);
-      // Outside [0, dims) no box can contain p (every box lies inside the bounds); also NaN.
-      if (!(t >= 0 && t < double(m_dims[std::size_t(a)]))) return false;
-      c[a] = std::size_t(t);
-    }
-    cell = (c[2] * m_dims[1] + c[1]) * m_dims[0] + c[0];
-    return true;
-  }
+  // Fills m_lo, m_hi with the padded bounding boxes of the tets.
+  BoxStats computeBoxes(const std::vector<Vec3>& vertices, const std::vector<Tet>& tets);
+  // Sets m_cells and m_cellSize from the boxes; returns the cell count.
+  std::size_t sizeCells(const BoxStats& boxes, std::size_t tetCount);
+
+  // Outside the grid no box can contain p (every box lies inside the bounds); also NaN.
+  bool cellOf(const Vec3& p, std::size_t& cell) const { return m_grid.entryCount() > 0 && m_cells.cellOf(p, cell); }
 
   TetGridSettings m_settings;
 
   // Runtime state of the last build.
   Real m_cellSize = 0;
-  double m_invCell = 1;
-  std::array<double, 3> m_origin{0, 0, 0};
-  std::array<std::size_t, 3> m_dims{0, 0, 0};
+  CellIndexing m_cells;
   std::vector<Vec3> m_lo, m_hi;                 // padded bounding box of each tet (empty box if non-finite)
-  std::vector<Index> m_cellStart;               // cells + 1: [begin, end) into m_entries
-  std::vector<Index> m_entries;                 // tet ids by cell; ascending within a cell
-  std::size_t m_entryCount = 0;                 // used part of m_entries
-  std::size_t m_reservedFor = ~std::size_t(0);  // tet count m_cellStart was reserved for
+  CellGrid m_grid;                              // tet ids by cell; ascending within a cell
+  std::size_t m_reservedFor = ~std::size_t(0);  // tet count m_grid was reserved for
 };
 
 }  // namespace hs::pbd
