@@ -126,7 +126,7 @@ const Verdict& RunMonitor::observe() {
   if (!check(sample.tissue, sample.cavity)) return m_verdict;
   gather(sample);
   ++m_observed;
-  m_extremes.add(sample, m_sim.hasHeart());
+  m_extremes.add(sample, m_sim.hasHeart() && m_settings.pump);
   if (m_sim.hasHeart() && m_settings.beatList) m_beats.record(sample.startTime, sample.phase, sample.cavity, sample.flows);
   if (sample.blood) m_verdict.issue = checkBlood(*sample.blood, m_settings.limits);
   m_last = std::move(sample);

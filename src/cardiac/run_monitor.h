@@ -72,7 +72,8 @@ struct StepSample {
 };
 
 // Extremes and means over the steps of a run. Blood's density error counts over the last
-// simulated second only (from `lastSecondFrom`), once the fluid has settled.
+// simulated second only (from `lastSecondFrom`), once the fluid has settled. `heart`: the
+// samples carry the wall's figures (a heart, and a monitor that gathers them).
 struct RunExtremes {
   double volumeErrorMax = 0;
   double volumeErrorMeanSum = 0;  // sum over steps of the per-step mean

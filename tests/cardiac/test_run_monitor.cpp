@@ -57,8 +57,9 @@ TEST(RunMonitorChecks, InvertedTetNamesItsPlace) {
     EXPECT_TRUE(contains(issue.what, part)) << "missing '" << part << "' in: " << issue.what;
   const Index v = model.mesh.tets[5][0];
   const std::string where = tetLocation(model, model.mesh.vertices, 5);
-  if (model.region[v] == Region::Myocardium)
+  if (model.region[v] == Region::Myocardium) {
     EXPECT_TRUE(contains(where, "AHA segment " + std::to_string(int(model.segment[v])))) << where;
+  }
   EXPECT_TRUE(contains(issue.what, where)) << issue.what;
 }
 

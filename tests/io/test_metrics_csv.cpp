@@ -28,10 +28,10 @@ cardiac::StepSample sample() {
   s.time = 0.035;
   s.phase = cardiac::Phase::Diastole;
   s.cavity = 1.25e-4;
-  s.tissue.volumeErrorMean = Real(0.002);
-  s.tissue.volumeErrorMax = Real(0.03);
+  s.tissue.volumeErrorMean = cardiac::Real(0.002);
+  s.tissue.volumeErrorMax = cardiac::Real(0.03);
   s.tissue.invertedTets = 0;
-  s.restDeviation = Real(0.015);
+  s.restDeviation = cardiac::Real(0.015);
   cardiac::BloodStats blood;
   blood.lost = 2;
   blood.densityErrorMean = 0.011;
@@ -42,6 +42,7 @@ cardiac::StepSample sample() {
   s.circulation = true;
   s.flows.mitralForward = 2e-6;
   s.flowStep.valves.mitralOpen = true;
+  s.flowStep.valves.aorticOpen = false;
   s.flowStep.count[std::size_t(cardiac::FlowRegion::Ventricle)] = 900;
   s.flowStep.pressure[std::size_t(cardiac::FlowRegion::Ventricle)] = 1333.0;
   return s;
