@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cardiac/heart_simulation.h"
+#include "cardiac/run_monitor.h"
 #include "exit_codes.h"
 #include "io/scenario_file.h"
 
@@ -21,6 +22,18 @@ namespace hs::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// A case whose simulation failed a health check (cardiac::RunMonitor): exit 3, as `run`.
+struct InvalidSimulation : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The monitor's checks on the state after a timed stretch, so that a benchmark of a broken
+// simulation reports the failure instead of its speed; outside the timing.
+void checkHealth(cardiac::RunMonitor& monitor) {
+  if (const cardiac::Verdict& verdict = monitor.checkNow(); !verdict.healthy())
+    throw InvalidSimulation(verdict.message());
+}
 
 struct BenchCase {
   std::string name;
@@ -32,8 +45,8 @@ struct BenchCase {
 // Steps a simulation for at least `seconds` after a warm-up, in windows of about 0.2 s, and
 // reports the median window's throughput (a shared machine's hiccups land in a few windows;
 // the median ignores them) with the slowest and fastest windows beside it.
-template <class Sim>
-nlohmann::json measure(Sim& sim, std::size_t particles, int threads, double seconds) {
+nlohmann::json measure(cardiac::HeartSimulation& sim, std::size_t particles, int threads, double seconds) {
+  cardiac::RunMonitor monitor(sim, cardiac::MonitorSettings::healthOnly());
   for (int i = 0; i < 50; ++i) sim.step();  // warm-up: caches, first-touch, lazy allocation
   long steps = 0;
   std::vector<double> windowRates;
@@ -49,6 +62,7 @@ nlohmann::json measure(Sim& sim, std::size_t particles, int threads, double seco
       window = std::chrono::duration<double>(Clock::now() - windowStart).count();
     }
     windowRates.push_back(double(windowSteps) / window);
+    checkHealth(monitor);
     steps += windowSteps;
     elapsed = std::chrono::duration<double>(Clock::now() - start).count();
   }
@@ -116,10 +130,12 @@ BenchCase scenarioCase(const std::string& name) {
             std::size_t particles = 0;
             for (int run = 0; run < 3; ++run) {
               cardiac::HeartSimulation sim(scenario, threads);
+              cardiac::RunMonitor monitor(sim, cardiac::MonitorSettings::healthOnly());
               particles = sim.particles().size();
               const auto start = Clock::now();
               for (long k = 0; k < steps; ++k) sim.step();
               times.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+              checkHealth(monitor);
             }
             std::sort(times.begin(), times.end());
             const double seconds = times[1];
@@ -172,7 +188,12 @@ nlohmann::ordered_json runIsolated(const BenchCase& c, int threads, double secon
   if (pid < 0) throw std::runtime_error("bench: fork failed");
   if (pid == 0) {
     close(fds[0]);
-    nlohmann::json r = c.run(threads, seconds);
+    nlohmann::json r;
+    try {
+      r = c.run(threads, seconds);
+    } catch (const InvalidSimulation& e) {
+      r = {{"invalid", e.what()}};
+    }
     r["name"] = c.name;
     r["description"] = c.description;
     r["peak_rss_mb"] = peakRssMb();
@@ -193,6 +214,8 @@ nlohmann::ordered_json runIsolated(const BenchCase& c, int threads, double secon
     throw std::runtime_error("bench: case '" + c.name + "' failed");
   nlohmann::ordered_json ordered;
   const nlohmann::json parsed = nlohmann::json::parse(text);
+  if (parsed.contains("invalid"))
+    throw InvalidSimulation("bench: case '" + c.name + "': " + parsed["invalid"].get<std::string>());
   for (const char* key : {"name", "steps_per_s", "ns_per_particle_step", "particles", "threads", "iterations",
                           "peak_rss_mb", "seconds"})
     ordered[key] = parsed.at(key);
@@ -235,6 +258,9 @@ int benchCommand(const BenchOptions& options) {
     nlohmann::ordered_json r;
     try {
       r = runIsolated(*c, threads, options.seconds);
+    } catch (const InvalidSimulation& e) {
+      std::cerr << "heartsim: error: " << e.what() << '\n';
+      return kExitInvalidSimulation;
     } catch (const std::exception& e) {
       std::cerr << "heartsim: error: " << e.what() << '\n';
       return kExitFailure;

@@ -25,34 +25,44 @@ void addSetOption(CLI::App* command, std::vector<std::string>& overrides, const 
       ->expected(1);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  using namespace hs::app;
-  CLI::App app{"heartsim: an interactive simulator of the heart's left ventricle and its blood flow"};
-  app.set_version_flag("--version", std::string("heartsim ") + HS_VERSION + " (git " + HS_GIT_REVISION + ")");
-  app.require_subcommand(1);
-
-  RunOptions run;
+// Every subcommand's options and, once parsed, which one was given.
+struct Commands {
+  hs::app::RunOptions run;
   double duration = -1;
-  CLI::App* runApp = app.add_subcommand("run", "Run a scenario headless and write its results");
+  hs::app::RenderOptions render;
+  bool renderClip = true;
+  hs::app::ViewOptions view;
+  hs::app::BenchOptions bench;
+  hs::app::ValidateOptions validate;
+  CLI::App* runApp = nullptr;
+  CLI::App* renderApp = nullptr;
+  CLI::App* viewApp = nullptr;
+  CLI::App* benchApp = nullptr;
+  CLI::App* damBreakApp = nullptr;
+};
+
+void addRunCommand(CLI::App& app, Commands& c) {
+  hs::app::RunOptions& run = c.run;
+  CLI::App* runApp = c.runApp = app.add_subcommand("run", "Run a scenario headless and write its results");
   runApp->add_option("scenario", run.scenario, "Built-in scenario name or path to a .toml file")->required();
-  runApp->add_option("--duration", duration, "Simulated time (s), overrides simulation.duration");
+  runApp->add_option("--duration", c.duration, "Simulated time (s), overrides simulation.duration");
   addThreadsOption(runApp, run.threads);
   runApp->add_option("--out", run.outDir, "Output directory (default: results/<scenario>)");
   runApp->add_flag("--json", run.json, "Print one JSON summary object on stdout");
   runApp->add_flag("--vtk", run.vtk, "Write VTK frames and a .pvd series for ParaView");
   addSetOption(runApp, run.overrides);
+}
 
-  RenderOptions render;
-  bool renderClip = true;
-  CLI::App* renderApp = app.add_subcommand("render", "Run a scenario headless and draw it offscreen as PNG images");
+void addRenderCommand(CLI::App& app, Commands& c) {
+  hs::app::RenderOptions& render = c.render;
+  CLI::App* renderApp = c.renderApp =
+      app.add_subcommand("render", "Run a scenario headless and draw it offscreen as PNG images");
   renderApp->add_option("scenario", render.scenario, "Built-in scenario name or path to a .toml file")->required();
   renderApp->add_option("--times", render.times, "Comma list of times (s) to draw, e.g. 0,0.08,1,2 (default: 0 and the end)");
   renderApp->add_option("--views", render.views, "Comma list of views: front, left, right, top")->capture_default_str();
   renderApp->add_option("--out", render.outDir, "Output directory (default: results/<scenario>/render)");
   renderApp->add_option("--size", render.size, "Size of each view, WIDTHxHEIGHT pixels")->capture_default_str();
-  renderApp->add_flag("--clip,!--no-clip", renderClip, "Cut the wall open at z = --clip-z (default: on with a heart)");
+  renderApp->add_flag("--clip,!--no-clip", c.renderClip, "Cut the wall open at z = --clip-z (default: on with a heart)");
   renderApp->add_option("--clip-z", render.clipZ, "Position of the cutting plane z = const (m)")->capture_default_str();
   renderApp->add_option("--wall-opacity", render.wallOpacity, "Wall opacity in (0, 1]; below 1 the wall is see-through")
       ->capture_default_str();
@@ -63,9 +73,12 @@ int main(int argc, char** argv) {
                         "Blood pressure (Pa) at the top of the pressure colour scale (0: from the scenario)");
   addThreadsOption(renderApp, render.threads);
   addSetOption(renderApp, render.overrides);
+}
 
-  ViewOptions view;
-  CLI::App* viewApp = app.add_subcommand("view", "Open the interactive viewer: watch, steer and photograph a scenario");
+void addViewCommand(CLI::App& app, Commands& c) {
+  hs::app::ViewOptions& view = c.view;
+  CLI::App* viewApp = c.viewApp =
+      app.add_subcommand("view", "Open the interactive viewer: watch, steer and photograph a scenario");
   viewApp->add_option("scenario", view.scenario, "Built-in scenario name or path to a .toml file")->capture_default_str();
   viewApp->add_option("--size", view.size, "Window size, WIDTHxHEIGHT pixels")->capture_default_str();
   viewApp->add_option("--frames", view.frames, "Quit after N frames (scripted use; 0 = until closed)");
@@ -73,18 +86,22 @@ int main(int argc, char** argv) {
   addThreadsOption(viewApp, view.threads,
                    "Simulation threads (default: all cores but one, which the drawing needs)");
   addSetOption(viewApp, view.overrides);
+}
 
-  BenchOptions bench;
-  CLI::App* benchApp = app.add_subcommand("bench", "End-to-end throughput benchmarks");
+void addBenchCommand(CLI::App& app, Commands& c) {
+  hs::app::BenchOptions& bench = c.bench;
+  CLI::App* benchApp = c.benchApp = app.add_subcommand("bench", "End-to-end throughput benchmarks");
   benchApp->add_option("--case", bench.cases, "Case to run (repeatable; default: all)")->expected(1)->take_all();
   addThreadsOption(benchApp, bench.threads);
   benchApp->add_option("--seconds", bench.seconds, "Measuring time per case (s)")->check(CLI::Range(0.1, 600.0));
   benchApp->add_flag("--json", bench.json, "Print one JSON object on stdout");
+}
 
-  ValidateOptions validate;
+void addValidateCommand(CLI::App& app, Commands& c) {
+  hs::app::ValidateOptions& validate = c.validate;
   CLI::App* validateApp = app.add_subcommand("validate", "Compare a simulation with experimental data");
   validateApp->require_subcommand(1);
-  CLI::App* damBreakApp =
+  CLI::App* damBreakApp = c.damBreakApp =
       validateApp->add_subcommand("dam-break", "Surge front of a collapsing column vs Martin & Moyce (1952), n^2 = 2");
   damBreakApp->add_option("--scenario", validate.scenario, "Built-in scenario name or path to a .toml file")
       ->capture_default_str();
@@ -92,7 +109,38 @@ int main(int argc, char** argv) {
   damBreakApp->add_option("--out", validate.outDir, "Output directory")->capture_default_str();
   addThreadsOption(damBreakApp, validate.threads);
   damBreakApp->add_flag("--json", validate.json, "Print one JSON report object on stdout");
+}
 
+// The parsed subcommand's exit code.
+int dispatch(Commands& c) {
+  using namespace hs::app;
+  if (c.runApp->parsed()) {
+    if (c.runApp->count("--duration") > 0) c.run.duration = c.duration;
+    return runCommand(c.run);
+  }
+  if (c.renderApp->parsed()) {
+    if (c.renderApp->count("--clip") + c.renderApp->count("--no-clip") > 0) c.render.clip = c.renderClip;
+    return renderCommand(c.render);
+  }
+  if (c.viewApp->parsed()) return viewCommand(c.view);
+  if (c.benchApp->parsed()) return benchCommand(c.bench);
+  if (c.damBreakApp->parsed()) return validateDamBreakCommand(c.validate);
+  return kExitBadInput;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace hs::app;
+  CLI::App app{"heartsim: an interactive simulator of the heart's left ventricle and its blood flow"};
+  app.set_version_flag("--version", std::string("heartsim ") + HS_VERSION + " (git " + HS_GIT_REVISION + ")");
+  app.require_subcommand(1);
+  Commands commands;
+  addRunCommand(app, commands);
+  addRenderCommand(app, commands);
+  addViewCommand(app, commands);
+  addBenchCommand(app, commands);
+  addValidateCommand(app, commands);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -106,20 +154,9 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   }
   try {
-    if (runApp->parsed()) {
-      if (runApp->count("--duration") > 0) run.duration = duration;
-      return runCommand(run);
-    }
-    if (renderApp->parsed()) {
-      if (renderApp->count("--clip") + renderApp->count("--no-clip") > 0) render.clip = renderClip;
-      return renderCommand(render);
-    }
-    if (viewApp->parsed()) return viewCommand(view);
-    if (benchApp->parsed()) return benchCommand(bench);
-    if (damBreakApp->parsed()) return validateDamBreakCommand(validate);
+    return dispatch(commands);
   } catch (const std::exception& e) {
     std::cerr << "heartsim: error: " << e.what() << '\n';
     return kExitFailure;
   }
-  return kExitBadInput;
 }

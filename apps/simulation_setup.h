@@ -1,6 +1,7 @@
 #pragma once
 // Setting up a simulation for a command, with the commands' error convention: one line on
 // stderr naming the scenario, exit 2 for parameters the model rejects, 1 for anything else.
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -39,6 +40,15 @@ inline std::unique_ptr<cardiac::HeartSimulation> makeSimulation(const cardiac::S
     exitCode = kExitFailure;
   }
   return nullptr;
+}
+
+// The output directory (with its parents), or false after printing why it cannot be made (the
+// caller exits with kExitFailure).
+inline bool createOutputDirOrReport(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) std::cerr << "heartsim: error: " << dir.string() << ": cannot create output directory: " << ec.message() << '\n';
+  return !ec;
 }
 
 }  // namespace hs::app

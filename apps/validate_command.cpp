@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "cardiac/heart_simulation.h"
+#include "cardiac/run_monitor.h"
 #include "dam_break_validation.h"
 #include "exit_codes.h"
 #include "io/scenario_file.h"
@@ -121,6 +122,83 @@ nlohmann::ordered_json pointsJson(const std::vector<PointComparison>& points) {
   return list;
 }
 
+// The surge front after every step, stopped at the first failed health check.
+struct FrontRun {
+  FrontCurve curve;
+  std::vector<double> zAll;  // the front over all particles, not only those near the floor
+  double wallSeconds = 0;
+};
+
+int simulateFront(cardiac::HeartSimulation& sim, const Geometry& geo, std::int64_t steps, FrontRun& run) {
+  const double radius = sim.scenario().blood.radius;
+  const double wallX = sim.scenario().container.min.x();
+  const double floorY = sim.scenario().container.min.y();
+  auto record = [&] {
+    const auto& x = sim.particles().position;
+    const std::span<const pbd::Vec3> blood(x.data() + sim.firstBloodParticle(), x.size() - sim.firstBloodParticle());
+    run.curve.t.push_back(sim.time());
+    run.curve.T.push_back(damBreakTime(sim.time(), geo.g, geo.a, geo.n2));
+    run.curve.Z.push_back(surgeFront(blood, radius, wallX, floorY, kFloorBandRadii * radius) / geo.a);
+    run.zAll.push_back(surgeFront(blood, radius, wallX, floorY, INFINITY) / geo.a);
+  };
+  cardiac::RunMonitor monitor(sim, cardiac::MonitorSettings::healthOnly());
+  const auto start = Clock::now();
+  ProgressBar progress(static_cast<long>(steps));
+  record();
+  for (std::int64_t s = 0; s < steps; ++s) {
+    sim.step();
+    if (const cardiac::Verdict& verdict = monitor.observe(); !verdict.healthy()) {
+      progress.finish();
+      std::cerr << "heartsim: error: " << verdict.message() << '\n';
+      return kExitInvalidSimulation;
+    }
+    record();
+    progress.update(static_cast<long>(s + 1), sim.time());
+  }
+  progress.finish();
+  run.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return kExitOk;
+}
+
+// validation.json: the simulated front against the experiment, with and without the
+// alternative time shift.
+nlohmann::ordered_json frontReport(const cardiac::Scenario& scenario, std::size_t particles, const Geometry& geo,
+                                   std::int64_t steps, int threads, const FrontRun& run, const fs::path& outDir) {
+  const FrontCurve& curve = run.curve;
+  const double wallSeconds = run.wallSeconds;
+  const double dt = scenario.simulation.dt;
+
+  const auto points = compareFront(curve, kMartinMoyceN2Front, kTimeShift, kCompareUpToT);
+  const auto pointsAlternative = compareFront(curve, kMartinMoyceN2Front, kAlternativeShift, kCompareUpToT);
+  const double maxError = maxRelativeError(points);
+  const bool pass = maxError <= kErrorBound;
+
+  nlohmann::ordered_json report;
+  report["validation"] = "dam-break";
+  report["reference"] = "Martin & Moyce (1952), Phil. Trans. R. Soc. A 244:312-324, Table 2 (n^2 = 2)";
+  report["scenario"] = scenario.name;
+  report["particles"] = particles;
+  report["a_m"] = geo.a;
+  report["n2"] = geo.n2;
+  report["dt_s"] = dt;
+  report["steps"] = steps;
+  report["iterations"] = scenario.blood.iterations;
+  report["threads"] = threads;
+  report["wall_s"] = wallSeconds;
+  report["front"] = "max x + radius over particles whose lowest point is within 2 radii of the floor";
+  report["time_shift"] = kTimeShift;
+  report["compared_up_to_T"] = kCompareUpToT;
+  report["points"] = pointsJson(points);
+  report["max_relative_error"] = maxError;
+  report["alternative_time_shift"] = kAlternativeShift;
+  report["points_alternative_shift"] = pointsJson(pointsAlternative);
+  report["max_relative_error_alternative_shift"] = maxRelativeError(pointsAlternative);
+  report["error_bound"] = kErrorBound;
+  report["pass"] = pass;
+  report["output_dir"] = outDir.string();
+  return report;
+}
+
 }  // namespace
 
 int validateDamBreakCommand(const ValidateOptions& options) {
@@ -145,73 +223,16 @@ int validateDamBreakCommand(const ValidateOptions& options) {
   const std::unique_ptr<cardiac::HeartSimulation> sim = makeSimulation(scenario, threads, options.scenario, setupError);
   if (!sim) return setupError;
   const fs::path outDir(options.outDir);
-  std::error_code ec;
-  fs::create_directories(outDir, ec);
-  if (ec) {
-    std::cerr << "heartsim: error: " << outDir.string() << ": cannot create output directory: " << ec.message() << '\n';
-    return kExitFailure;
-  }
+  if (!createOutputDirOrReport(outDir)) return kExitFailure;
 
-  const double radius = scenario.blood.radius;
-  const double wallX = scenario.container.min.x();
-  const double floorY = scenario.container.min.y();
-  FrontCurve curve;
-  std::vector<double> zAll;
-  auto record = [&] {
-    const auto& x = sim->particles().position;
-    const std::span<const pbd::Vec3> blood(x.data() + sim->firstBloodParticle(), x.size() - sim->firstBloodParticle());
-    curve.t.push_back(sim->time());
-    curve.T.push_back(damBreakTime(sim->time(), geo.g, geo.a, geo.n2));
-    curve.Z.push_back(surgeFront(blood, radius, wallX, floorY, kFloorBandRadii * radius) / geo.a);
-    zAll.push_back(surgeFront(blood, radius, wallX, floorY, INFINITY) / geo.a);
-  };
-  const auto start = Clock::now();
-  ProgressBar progress(static_cast<long>(steps));
-  record();
-  for (std::int64_t s = 0; s < steps; ++s) {
-    sim->step();
-    if (!sim->tissueStats().finite) {
-      progress.finish();
-      std::cerr << "heartsim: error: simulation became invalid at step " << s + 1 << " (t = " << sim->time()
-                << " s): non-finite particle state\n";
-      return kExitInvalidSimulation;
-    }
-    record();
-    progress.update(static_cast<long>(s + 1), sim->time());
-  }
-  progress.finish();
-  const double wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
-
-  const auto points = compareFront(curve, kMartinMoyceN2Front, kTimeShift, kCompareUpToT);
-  const auto pointsAlternative = compareFront(curve, kMartinMoyceN2Front, kAlternativeShift, kCompareUpToT);
-  const double maxError = maxRelativeError(points);
-  const bool pass = maxError <= kErrorBound;
-
-  nlohmann::ordered_json report;
-  report["validation"] = "dam-break";
-  report["reference"] = "Martin & Moyce (1952), Phil. Trans. R. Soc. A 244:312-324, Table 2 (n^2 = 2)";
-  report["scenario"] = scenario.name;
-  report["particles"] = sim->particles().size() - sim->firstBloodParticle();
-  report["a_m"] = geo.a;
-  report["n2"] = geo.n2;
-  report["dt_s"] = dt;
-  report["steps"] = steps;
-  report["iterations"] = scenario.blood.iterations;
-  report["threads"] = threads;
-  report["wall_s"] = wallSeconds;
-  report["front"] = "max x + radius over particles whose lowest point is within 2 radii of the floor";
-  report["time_shift"] = kTimeShift;
-  report["compared_up_to_T"] = kCompareUpToT;
-  report["points"] = pointsJson(points);
-  report["max_relative_error"] = maxError;
-  report["alternative_time_shift"] = kAlternativeShift;
-  report["points_alternative_shift"] = pointsJson(pointsAlternative);
-  report["max_relative_error_alternative_shift"] = maxRelativeError(pointsAlternative);
-  report["error_bound"] = kErrorBound;
-  report["pass"] = pass;
-  report["output_dir"] = outDir.string();
+  FrontRun run;
+  if (const int simulated = simulateFront(*sim, geo, steps, run); simulated != kExitOk) return simulated;
+  const nlohmann::ordered_json report =
+      frontReport(scenario, sim->particles().size() - sim->firstBloodParticle(), geo, steps, threads, run, outDir);
+  const FrontCurve& curve = run.curve;
+  const bool pass = report["pass"].get<bool>();
   try {
-    writeCsv(outDir / "front.csv", curve, zAll);
+    writeCsv(outDir / "front.csv", curve, run.zAll);
     writePlot(outDir / "dam-break-front.png", curve, kTimeShift,
               double(scenario.container.max.x() - scenario.container.min.x()) / geo.a);
     std::ofstream out(outDir / "validation.json");
@@ -224,8 +245,8 @@ int validateDamBreakCommand(const ValidateOptions& options) {
   if (options.json) std::cout << report.dump() << std::endl;
   else
     std::cerr << "heartsim: validate dam-break: " << report["particles"].get<std::size_t>() << " particles, "
-              << steps << " steps in " << wallSeconds << " s; max relative front error up to T = " << kCompareUpToT
-              << ": " << maxError << " (bound " << kErrorBound << ", shift " << kTimeShift << "): "
+              << steps << " steps in " << run.wallSeconds << " s; max relative front error up to T = "
+              << kCompareUpToT << ": " << report["max_relative_error"].get<double>() << " (bound " << kErrorBound << ", shift " << kTimeShift << "): "
               << (pass ? "PASS" : "FAIL") << "; results in " << outDir.string() << '\n';
   return pass ? kExitOk : kExitValidationFailed;
 }

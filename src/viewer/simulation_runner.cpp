@@ -1,9 +1,11 @@
 #include "viewer/simulation_runner.h"
 
+#include <algorithm>
 #include <chrono>
-#include <cmath>
-#include <cstdio>
 #include <exception>
+
+#include "io/scenario_file.h"
+#include "render/scene.h"
 
 namespace hs::viewer {
 namespace {
@@ -14,7 +16,85 @@ using Clock = std::chrono::steady_clock;
 // being dragged) must not make the list grow without bound.
 constexpr std::size_t kMaxPendingSamples = std::size_t(1) << 16;
 
+PumpSample pumpSample(const cardiac::StepSample& step) {
+  PumpSample sample;
+  sample.time = step.time;
+  sample.cavity = step.cavity;
+  if (step.circulation) {
+    setFlowRates(sample, step.flows, step.time - step.startTime);
+    sample.pressureLv = step.pressure(cardiac::FlowRegion::Ventricle);
+    sample.pressureInflow = step.pressure(cardiac::FlowRegion::InflowVessel);
+    sample.pressureOutflow = step.pressure(cardiac::FlowRegion::OutflowVessel);
+  }
+  return sample;
+}
+
 }  // namespace
+
+std::vector<ScenarioChoice> builtinScenarioChoices() {
+  std::vector<ScenarioChoice> choices;
+  for (const std::string& name : io::builtinScenarioNames()) {
+    std::string description;
+    try {
+      description = io::loadScenario(name).description;
+    } catch (const std::exception& e) {
+      description = std::string("cannot be loaded: ") + e.what();
+    }
+    choices.push_back({name, description});
+  }
+  return choices;
+}
+
+void setControls(const cardiac::Scenario& scenario, ViewerControls& controls) {
+  controls.cycleEnabled = scenario.cycle.enabled;
+  controls.heartRateBpm = float(scenario.cycle.heartRateBpm);
+  controls.contraction = float(scenario.cycle.contraction);
+  controls.beatingDuration = scenario.cycle.beatingDuration;
+  controls.beatingDisplace = float(scenario.cycle.beatingDisplace);
+  controls.blood = bloodControlsFrom(scenario, 0);
+}
+
+cardiac::Scenario configuredScenario(const cardiac::Scenario& base, const ViewerControls& controls,
+                                     const RegionEditor& region) {
+  cardiac::Scenario s = base;
+  s.cycle.enabled = controls.cycleEnabled;
+  if (controls.heartRateBpm != float(s.cycle.heartRateBpm)) {
+    s.cycle.mode = cardiac::TimingMode::Physiological;
+    s.cycle.heartRateBpm = cardiac::Real(controls.heartRateBpm);
+  }
+  s.cycle.contraction = cardiac::Real(controls.contraction);
+  s.cycle.beatingDuration = std::max(1, controls.beatingDuration);
+  s.cycle.beatingDisplace = cardiac::Real(controls.beatingDisplace);
+  region.configure(s);
+  if (s.blood.enabled) applyBloodControls(controls.blood, s);
+  return s;
+}
+
+void readStatus(const SimulationState& state, ViewerStatus& status) {
+  const cardiac::HeartSimulation& sim = *state.sim;
+  const cardiac::StepSample& step = state.monitor->last();
+  const cardiac::Scenario& scenario = sim.scenario();
+  status.scenarioName = scenario.name;
+  status.time = sim.time();
+  status.dt = double(scenario.simulation.dt);
+  status.hasHeart = sim.hasHeart();
+  status.hasBlood = sim.hasBlood();
+  status.physiological = scenario.cycle.mode == cardiac::TimingMode::Physiological;
+  status.heartSize = float(scenario.geometry.endoRadius);
+  status.phase = sim.hasHeart() && scenario.cycle.enabled ? cardiac::phaseName(step.phase) : "";
+  status.cavity = sim.hasHeart() ? step.cavity : -1;
+  status.speedMax = render::defaultSpeedScale(scenario);
+  status.pressureMax = render::defaultPressureScale(scenario);
+  PumpStatus& pump = status.pump;
+  pump.hasHeart = sim.hasHeart();
+  pump.hasBlood = step.circulation;
+  pump.beats = state.pump ? state.pump->readings() : BeatReadings{};
+  pump.cycleOn = scenario.cycle.enabled;
+  pump.phase = step.phase;
+  pump.thesisTiming = scenario.cycle.mode == cardiac::TimingMode::Thesis;
+  pump.valves = step.circulation ? step.flowStep.valves : cardiac::ValveStates{};
+  pump.valveMode = scenario.circulation.valveMode;
+}
 
 SimulationRunner::Access::Access(SimulationRunner& r) : runner(r) {
   runner.m_mainWaiting = true;
@@ -43,10 +123,14 @@ SimulationRunner::~SimulationRunner() {
 
 void SimulationRunner::start(const cardiac::Scenario& scenario) {
   auto sim = std::make_unique<cardiac::HeartSimulation>(scenario, m_threads);
-  const double dt = double(scenario.simulation.dt);
+  // The panel keeps its own bounded beat readout: the monitor lists no beats.
+  cardiac::MonitorSettings settings;
+  settings.beatList = false;
+  auto monitor = std::make_unique<cardiac::RunMonitor>(*sim, settings);
   std::optional<PumpReadout> pump;
-  if (sim->hasHeart()) pump.emplace(double(sim->cavityVolume()), dt);
+  if (sim->hasHeart()) pump.emplace(monitor->last().cavity, double(scenario.simulation.dt));
   access([&](SimulationState& s) {
+    s.monitor = std::move(monitor);  // before the simulation it watches goes
     s.sim = std::move(sim);
     s.pump = std::move(pump);
     s.newSamples.clear();
@@ -108,45 +192,25 @@ void SimulationRunner::run() {
   }
 }
 
-// One step under the lock, then what the panel shows of it.
+// One step under the lock, then what the panel shows of it; a failed health check pauses.
 void SimulationRunner::stepOnce() {
   SimulationState& s = m_state;
-  cardiac::HeartSimulation& sim = *s.sim;
-  const double start = sim.time();
   try {
-    sim.step();
+    s.sim->step();
   } catch (const std::exception& e) {
     s.playing = false;
     s.message = std::string("the simulation stopped: ") + e.what();
     return;
   }
-  double cavity = 0;
-  if (sim.hasHeart()) {
-    cavity = double(sim.cavityVolume());
-    const cardiac::Circulation* circulation = sim.circulation();
-    const cardiac::ValveFlows flows = circulation ? circulation->meter.lastStepFlows() : cardiac::ValveFlows{};
-    s.pump->record(start, sim.lastPhase(), cavity, flows);
-    PumpSample sample;
-    sample.time = sim.time();
-    sample.cavity = cavity;
-    if (circulation) {
-      setFlowRates(sample, flows, sim.time() - start);
-      const cardiac::FlowStep& f = circulation->meter.lastStep();
-      sample.pressureLv = f.pressure[std::size_t(cardiac::FlowRegion::Ventricle)];
-      sample.pressureInflow = f.pressure[std::size_t(cardiac::FlowRegion::InflowVessel)];
-      sample.pressureOutflow = f.pressure[std::size_t(cardiac::FlowRegion::OutflowVessel)];
-    }
-    if (s.newSamples.size() < kMaxPendingSamples) s.newSamples.push_back(sample);
-  }
-  const cardiac::TissueStats tissue = sim.tissueStats();
-  if (!tissue.finite || !std::isfinite(cavity)) {
+  if (const cardiac::Verdict& verdict = s.monitor->observe(); !verdict.healthy()) {
     s.playing = false;
-    char text[160];
-    std::snprintf(text, sizeof text,
-                  "simulation became invalid at t = %.3f s (particle %lld not finite); Reset", sim.time(),
-                  static_cast<long long>(tissue.firstNonFinite));
-    s.message = text;
+    s.message = verdict.message() + "; Reset";
+    return;
   }
+  if (!s.sim->hasHeart()) return;
+  const cardiac::StepSample& step = s.monitor->last();
+  s.pump->record(step.startTime, step.phase, step.cavity, step.flows);
+  if (s.newSamples.size() < kMaxPendingSamples) s.newSamples.push_back(pumpSample(step));
 }
 
 }  // namespace hs::viewer

@@ -1,6 +1,8 @@
 #pragma once
 // The viewer's simulation thread. It steps the simulation at real-time pace (pacing.h) while
-// the main thread draws, and after each step records the pump's figures (pump_readout.h).
+// the main thread draws; after each step a cardiac::RunMonitor checks the simulation's health
+// (as `heartsim run` does) and gathers the step's figures, which feed the pump's readout
+// (pump_readout.h) and the plots.
 //
 // Sharing: everything the two threads share is in SimulationState, guarded by one mutex. The
 // worker holds it for one step at a time; the main thread reads and writes the state only
@@ -19,13 +21,17 @@
 #include <vector>
 
 #include "cardiac/heart_simulation.h"
+#include "cardiac/run_monitor.h"
 #include "viewer/pacing.h"
 #include "viewer/pump_readout.h"
+#include "viewer/region_editor.h"
+#include "viewer/ui_panel.h"
 
 namespace hs::viewer {
 
 struct SimulationState {
   std::unique_ptr<cardiac::HeartSimulation> sim;
+  std::unique_ptr<cardiac::RunMonitor> monitor;  // of `sim`
   std::optional<PumpReadout> pump;     // with a heart
   std::vector<PumpSample> newSamples;  // recorded since the main thread last took them
   bool playing = true;
@@ -37,6 +43,18 @@ struct SimulationState {
   std::string message;    // "simulation became invalid ...", taken by the main thread
   std::uint64_t restarts = 0;
 };
+
+// The built-in presets with their descriptions (each a scenario file compiled in).
+std::vector<ScenarioChoice> builtinScenarioChoices();
+
+// The panel's cycle and blood controls from a scenario's settings, and the scenario with the
+// panel's cycle, blood and beating-region settings applied: what a (re)start runs.
+void setControls(const cardiac::Scenario& scenario, ViewerControls& controls);
+cardiac::Scenario configuredScenario(const cardiac::Scenario& base, const ViewerControls& controls,
+                                     const RegionEditor& region);
+
+// The simulation's part of the panels' status: scenario, time, phase, cavity, valves, beats.
+void readStatus(const SimulationState& state, ViewerStatus& status);
 
 class SimulationRunner {
  public:

@@ -34,21 +34,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The built-in presets with their descriptions (each a scenario file compiled in).
-std::vector<ScenarioChoice> scenarioChoices() {
-  std::vector<ScenarioChoice> choices;
-  for (const std::string& name : io::builtinScenarioNames()) {
-    std::string description;
-    try {
-      description = io::loadScenario(name).description;
-    } catch (const std::exception& e) {
-      description = std::string("cannot be loaded: ") + e.what();
-    }
-    choices.push_back({name, description});
-  }
-  return choices;
-}
-
 // A brush dab to apply to the simulation's wall at the next access.
 struct BrushDab {
   BrushQuery query;
@@ -60,7 +45,7 @@ class ViewerApp {
   explicit ViewerApp(const ViewerOptions& options)
       : m_options(options),
         m_baseScenario(options.scenario),
-        m_scenarios(scenarioChoices()),
+        m_scenarios(builtinScenarioChoices()),
         m_window(options.width, options.height, !options.screenshot.empty()),
         m_runner(options.threads) {
     glfwSetWindowUserPointer(m_window.handle, this);
@@ -120,22 +105,6 @@ class ViewerApp {
     return found == m_scenarios.end() ? -1 : int(found - m_scenarios.begin());
   }
 
-  // The scenario with the panel's cycle and blood settings applied.
-  cardiac::Scenario configured() const {
-    cardiac::Scenario s = m_baseScenario;
-    s.cycle.enabled = m_controls.cycleEnabled;
-    if (m_controls.heartRateBpm != float(s.cycle.heartRateBpm)) {
-      s.cycle.mode = cardiac::TimingMode::Physiological;
-      s.cycle.heartRateBpm = cardiac::Real(m_controls.heartRateBpm);
-    }
-    s.cycle.contraction = cardiac::Real(m_controls.contraction);
-    s.cycle.beatingDuration = std::max(1, m_controls.beatingDuration);
-    s.cycle.beatingDisplace = cardiac::Real(m_controls.beatingDisplace);
-    m_region.configure(s);
-    if (s.blood.enabled) applyBloodControls(m_controls.blood, s);
-    return s;
-  }
-
   // A new scenario: controls from its settings, the camera framing it. When it cannot start,
   // the one running stays, with its controls.
   void startScenario(const cardiac::Scenario& scenario) {
@@ -143,12 +112,7 @@ class ViewerApp {
     const ViewerControls previousControls = m_controls;
     const RegionEditor previousRegion = m_region;
     m_baseScenario = scenario;
-    m_controls.cycleEnabled = scenario.cycle.enabled;
-    m_controls.heartRateBpm = float(scenario.cycle.heartRateBpm);
-    m_controls.contraction = float(scenario.cycle.contraction);
-    m_controls.beatingDuration = scenario.cycle.beatingDuration;
-    m_controls.beatingDisplace = float(scenario.cycle.beatingDisplace);
-    m_controls.blood = bloodControlsFrom(scenario, 0);
+    setControls(scenario, m_controls);
     m_region = RegionEditor();  // a region applied to the last scenario is not this one's
     if (!restart()) {
       m_baseScenario = previousBase, m_controls = previousControls, m_region = previousRegion;
@@ -162,7 +126,7 @@ class ViewerApp {
       m_region.startScenario(sim, m_controls.region);
       bounds = render::sceneBounds(sim);
       m_status.hasHeart = sim.hasHeart();
-      m_status.pump.scale = volumeScaleFor(sim.hasHeart() ? double(sim.cavityVolume()) : 0.0);
+      m_status.pump.scale = volumeScaleFor(s.monitor->last().cavity);
       const int blood = sim.hasBlood() ? int(sim.particles().size() - sim.firstBloodParticle()) : 0;
       m_controls.blood = bloodControlsFrom(scenario, blood);
     });
@@ -178,7 +142,7 @@ class ViewerApp {
   // simulation already runs, which then goes on.
   bool restart() {
     try {
-      m_runner.start(configured());
+      m_runner.start(configuredScenario(m_baseScenario, m_controls, m_region));
     } catch (const std::invalid_argument& e) {
       if (!m_started) throw;
       m_status.message = std::string("cannot restart: ") + e.what();
@@ -330,7 +294,9 @@ class ViewerApp {
       if (!s.message.empty()) m_status.message = s.message, s.message.clear();
       m_status.realTimeFactor = s.paceFactor;
       m_status.behind = s.behind && s.playing;
-      fillStatus(sim, s);
+      readStatus(s, m_status);
+      m_status.bloodColour = c.bloodColour;
+      m_region.fillStatus(m_status.region, sim.scenario().cycle.enabled);
       scene = render::buildScene(sim, options);
     });
     m_dabs.clear();
@@ -344,33 +310,6 @@ class ViewerApp {
                          double(std::max(h, 1));
     m_status.region.brushWorldRadius = pixel * double(m_controls.region.brushRadiusPx);
     return scene;
-  }
-
-  void fillStatus(const cardiac::HeartSimulation& sim, const SimulationState& state) {
-    const cardiac::Scenario& scenario = sim.scenario();
-    m_status.scenarioName = scenario.name;
-    m_status.time = sim.time();
-    m_status.dt = double(scenario.simulation.dt);
-    m_status.hasHeart = sim.hasHeart();
-    m_status.hasBlood = sim.hasBlood();
-    m_status.physiological = scenario.cycle.mode == cardiac::TimingMode::Physiological;
-    m_status.heartSize = float(scenario.geometry.endoRadius);
-    m_status.phase = sim.hasHeart() && scenario.cycle.enabled ? cardiac::phaseName(sim.lastPhase()) : "";
-    m_status.cavity = sim.hasHeart() ? double(sim.cavityVolume()) : -1;
-    m_status.speedMax = render::defaultSpeedScale(scenario);
-    m_status.pressureMax = render::defaultPressureScale(scenario);
-    m_status.bloodColour = m_controls.bloodColour;
-    m_region.fillStatus(m_status.region, scenario.cycle.enabled);
-    PumpStatus& pump = m_status.pump;
-    const cardiac::Circulation* circulation = sim.circulation();
-    pump.hasHeart = sim.hasHeart();
-    pump.hasBlood = circulation != nullptr;
-    pump.beats = state.pump ? state.pump->readings() : BeatReadings{};
-    pump.cycleOn = scenario.cycle.enabled;
-    pump.phase = sim.lastPhase();
-    pump.thesisTiming = scenario.cycle.mode == cardiac::TimingMode::Thesis;
-    pump.valves = circulation ? circulation->meter.lastStep().valves : cardiac::ValveStates{};
-    pump.valveMode = scenario.circulation.valveMode;
   }
 
   void saveScreenshot(const std::string& path, int width, int height) {

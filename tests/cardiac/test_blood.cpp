@@ -184,11 +184,11 @@ TEST(BloodFluid, CollisionRadiusOnlyWithParticleCollision) {
 
 TEST(BloodSolver, ContainerWallsArePlanesOrAMesh) {
   Scenario s = blockScenario();
-  const pbd::FluidStepSettings planes = bloodSolverSettings(s, 1);
+  const pbd::FluidStepSettings planes = bloodSolverSettings(s);
   EXPECT_EQ(planes.walls.size(), 6u);
   EXPECT_FALSE(planes.mesh);
   s.container.mesh = true;
-  const pbd::FluidStepSettings mesh = bloodSolverSettings(s, 1);
+  const pbd::FluidStepSettings mesh = bloodSolverSettings(s);
   EXPECT_TRUE(mesh.walls.empty());
   EXPECT_TRUE(mesh.mesh);
   EXPECT_EQ(mesh.fluid.particleMass, bloodFluidSettings(s.blood).particleMass);
@@ -204,9 +204,9 @@ TEST(BloodSolver, ViscosityTooStiffForTheTimeStepIsAClearError) {
   s.blood.supportRadius = Real(0.004);
   s.blood.restDensity = 1060;
   s.blood.viscosity = Real(2.0);
-  EXPECT_NO_THROW(bloodSolverSettings(s, 1));
+  EXPECT_NO_THROW(bloodSolverSettings(s));
   s.blood.viscosity = Real(2.3);
-  const std::string message = thrownMessage<std::invalid_argument>([&] { bloodSolverSettings(s, 1); });
+  const std::string message = thrownMessage<std::invalid_argument>([&] { bloodSolverSettings(s); });
   EXPECT_NE(message.find("blood.viscosity"), std::string::npos) << message;
   EXPECT_NE(message.find("too viscous"), std::string::npos) << message;
 }
@@ -215,13 +215,13 @@ TEST(BloodSolver, ParticlesOverlappingAtRestAreAClearError) {
   Scenario s = blockScenario();  // spacing 0.1 m
   s.blood.particleCollision = true;
   s.blood.radius = Real(0.05);  // two radii = spacing: touching, allowed
-  EXPECT_NO_THROW(bloodSolverSettings(s, 1));
+  EXPECT_NO_THROW(bloodSolverSettings(s));
   s.blood.radius = Real(0.06);
-  const std::string message = thrownMessage<std::invalid_argument>([&] { bloodSolverSettings(s, 1); });
+  const std::string message = thrownMessage<std::invalid_argument>([&] { bloodSolverSettings(s); });
   EXPECT_NE(message.find("blood.radius"), std::string::npos) << message;
   EXPECT_NE(message.find("overlap at rest"), std::string::npos) << message;
   s.blood.particleCollision = false;  // without collisions the radius is only the wall distance
-  EXPECT_NO_THROW(bloodSolverSettings(s, 1));
+  EXPECT_NO_THROW(bloodSolverSettings(s));
 }
 
 }  // namespace

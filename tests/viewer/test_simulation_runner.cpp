@@ -7,6 +7,7 @@
 #include <chrono>
 #include <functional>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -86,6 +87,27 @@ TEST(ViewerSimulationRunner, StepPausesAndRestartStartsOver) {
   bad.cycle.vertices = {999999};  // no such vertex: the cycle rejects it
   EXPECT_THROW(runner.start(bad), std::invalid_argument);
   ASSERT_TRUE(waitFor(runner, [](SimulationState& s) { return s.sim && s.sim->stepCount() >= 3; }));
+}
+
+// The same health checks as `heartsim run` (cardiac::RunMonitor): a wall pushed 3 m per step
+// folds at the first step, and the runner pauses with the monitor's one line.
+TEST(ViewerSimulationRunner, InvalidSimulationPausesWithWhenAndWhere) {
+  cardiac::Scenario scenario = io::loadScenario("heart-only");
+  scenario.cycle.beatingDisplace = cardiac::Real(3);
+  SimulationRunner runner(1);
+  runner.start(scenario);
+  std::string message;
+  ASSERT_TRUE(waitFor(runner, [&](SimulationState& s) {
+    message = s.message;
+    return !s.message.empty();
+  }));
+  runner.access([](SimulationState& s) {
+    EXPECT_FALSE(s.playing);
+    EXPECT_EQ(s.sim->stepCount(), 1);
+    EXPECT_TRUE(s.newSamples.empty()) << "a failed step is not plotted";
+  });
+  for (const char* part : {"simulation became invalid at step 1 ", "inverted", "tet ", "x = ", "; Reset"})
+    EXPECT_NE(message.find(part), std::string::npos) << "missing '" << part << "' in: " << message;
 }
 
 }  // namespace

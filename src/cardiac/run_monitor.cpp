@@ -1,0 +1,186 @@
+#include "cardiac/run_monitor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "pbd/solver.h"
+#include "pbd/tet_mesh.h"
+
+namespace hs::cardiac {
+namespace {
+
+const char* regionName(Region region) {
+  switch (region) {
+    case Region::Myocardium: return "myocardium";
+    case Region::BasePlate: return "base plate";
+    case Region::InflowVessel: return "inflow vessel";
+    case Region::OutflowVessel: return "outflow vessel";
+  }
+  return "?";
+}
+
+}  // namespace
+
+std::string Verdict::message() const {
+  std::ostringstream s;
+  s << "simulation became invalid at step " << step << " (t = " << time << " s): " << issue.what;
+  return s.str();
+}
+
+std::string tetLocation(const LvModel& model, std::span<const Vec3> positions, Index tet) {
+  const Index v = model.mesh.tets[tet][0];
+  const Vec3& x = positions[v];
+  std::ostringstream s;
+  s.precision(3);
+  s << "x = " << x.x() << ", y = " << x.y() << ", z = " << x.z() << " m, ";
+  if (model.region[v] == Region::Myocardium) s << "AHA segment " << int(model.segment[v]);
+  else s << regionName(model.region[v]);
+  return s.str();
+}
+
+HealthIssue checkTissue(const TissueStats& tissue, bool cavityFinite, const LvModel* model,
+                        std::span<const Vec3> positions) {
+  if (!tissue.finite || !cavityFinite)
+    return {HealthCheck::NonFinite,
+            "particle " + std::to_string(tissue.firstNonFinite) + " has a non-finite position or velocity"};
+  if (tissue.invertedTets == 0) return {};
+  std::string what = std::to_string(tissue.invertedTets) + " wall tetrahedra inverted (first: tet " +
+                     std::to_string(tissue.firstInvertedTet);
+  if (model) what += " at " + tetLocation(*model, positions, tissue.firstInvertedTet);
+  return {HealthCheck::InvertedTets, what + ")"};
+}
+
+HealthIssue checkBlood(const BloodStats& blood, const HealthLimits& limits) {
+  if (blood.lost > limits.bloodLost)
+    return {HealthCheck::BloodLost, std::to_string(blood.lost) + " of " + std::to_string(blood.particles) +
+                                        " blood particles lost outside the domain (limit " +
+                                        std::to_string(limits.bloodLost) + ")"};
+  if (blood.insideWall > limits.bloodInsideWall)
+    return {HealthCheck::BloodInsideWall, std::to_string(blood.insideWall) + " of " +
+                                              std::to_string(blood.particles) +
+                                              " blood particles inside the wall's tetrahedra (limit " +
+                                              std::to_string(limits.bloodInsideWall) + ")"};
+  return {};
+}
+
+void RunExtremes::add(const StepSample& sample, bool heart) {
+  if (heart) {
+    volumeErrorMax = std::max(volumeErrorMax, double(sample.tissue.volumeErrorMax));
+    volumeErrorMeanSum += double(sample.tissue.volumeErrorMean);
+    cavityMin = std::min(cavityMin, sample.cavity);
+    cavityMax = std::max(cavityMax, sample.cavity);
+  }
+  if (!sample.blood) return;
+  const BloodStats& blood = *sample.blood;
+  bloodLostMax = std::max(bloodLostMax, blood.lost);
+  bloodInsideWallMax = std::max(bloodInsideWallMax, blood.insideWall);
+  bloodSpeedMax = std::max(bloodSpeedMax, blood.maxSpeed);
+  if (sample.time > lastSecondFrom) {
+    densityErrorMeanSum += blood.densityErrorMean;
+    densityErrorMax = std::max(densityErrorMax, blood.densityErrorMax);
+    ++lastSecondSteps;
+  }
+}
+
+RunMonitor::RunMonitor(const HeartSimulation& sim, MonitorSettings settings)
+    : m_sim(sim),
+      m_settings(settings),
+      m_beats(sim.hasHeart() && settings.pump ? double(sim.cavityVolume()) : 0.0,
+              double(sim.scenario().simulation.dt)) {
+  m_extremes.lastSecondFrom = settings.endTime - 1.0;
+  m_last.step = sim.stepCount();
+  m_last.startTime = m_last.time = sim.time();
+  m_last.phase = sim.lastPhase();
+  if (sim.hasHeart() && settings.pump) m_last.cavity = double(sim.cavityVolume());
+}
+
+bool RunMonitor::check(const TissueStats& tissue, double cavity) {
+  m_verdict.step = m_sim.stepCount();
+  m_verdict.time = m_sim.time();
+  const LvModel* model = m_sim.hasHeart() ? &m_sim.model() : nullptr;
+  m_verdict.issue = checkTissue(tissue, std::isfinite(cavity), model, m_sim.particles().position);
+  return m_verdict.healthy();
+}
+
+bool RunMonitor::bloodLimited() const {
+  return m_settings.limits.bloodLost != HealthLimits::kUnlimited ||
+         m_settings.limits.bloodInsideWall != HealthLimits::kUnlimited;
+}
+
+const Verdict& RunMonitor::checkNow() {
+  const double cavity = m_sim.hasHeart() ? double(m_sim.cavityVolume()) : 0.0;
+  if (check(m_sim.tissueStats(), cavity) && m_sim.hasBlood() && bloodLimited())
+    m_verdict.issue = checkBlood(m_sim.bloodStats(), m_settings.limits);
+  return m_verdict;
+}
+
+const Verdict& RunMonitor::observe() {
+  StepSample sample;
+  sample.step = m_sim.stepCount();
+  sample.startTime = m_last.time;
+  sample.time = m_sim.time();
+  sample.phase = m_sim.lastPhase();
+  sample.tissue = m_sim.tissueStats();
+  if (m_sim.hasHeart() && m_settings.pump) sample.cavity = double(m_sim.cavityVolume());
+  if (!check(sample.tissue, sample.cavity)) return m_verdict;
+  gather(sample);
+  ++m_observed;
+  m_extremes.add(sample, m_sim.hasHeart() && m_settings.pump);
+  if (m_sim.hasHeart() && m_settings.beatList) m_beats.record(sample.startTime, sample.phase, sample.cavity, sample.flows);
+  if (sample.blood) m_verdict.issue = checkBlood(*sample.blood, m_settings.limits);
+  m_last = std::move(sample);
+  return m_verdict;
+}
+
+// The figures the settings ask for; blood statistics (a pass over every particle and its
+// neighbours) only when a limit or a reader needs them.
+void RunMonitor::gather(StepSample& sample) const {
+  if (m_sim.hasBlood() && (m_settings.everyColumn || bloodLimited())) sample.blood = m_sim.bloodStats();
+  if (!m_sim.hasHeart()) return;
+  if (m_settings.everyColumn) sample.restDeviation = m_sim.restDeviationRelative();
+  if (const Circulation* circulation = m_sim.circulation(); circulation && m_settings.pump) {
+    sample.circulation = true;
+    sample.flows = circulation->meter.lastStepFlows();
+    sample.flowStep = circulation->meter.lastStep();
+  }
+}
+
+RunSummary RunMonitor::summary() const {
+  RunSummary r;
+  r.steps = m_observed;
+  r.time = m_sim.time();
+  r.stateHash = pbd::stateHash(m_sim.particles());
+  r.heart = m_sim.hasHeart();
+  r.blood = m_sim.hasBlood();
+  r.beats = m_beats;
+  const RunExtremes& e = m_extremes;
+  if (r.heart) {
+    const LvModel& model = m_sim.model();
+    const pbd::MeshQuality quality = pbd::measureQuality(model.mesh);
+    r.vertices = model.mesh.vertices.size();
+    r.tets = model.mesh.tets.size();
+    r.surfaceTriangles = model.surface.size();
+    r.volumeErrorMax = e.volumeErrorMax;
+    r.volumeErrorMean = m_observed > 0 ? e.volumeErrorMeanSum / double(m_observed) : 0.0;
+    r.invertedTets = m_sim.tissueStats().invertedTets;
+    r.restDeviation = m_sim.restDeviationRelative();
+    r.minDihedralDeg = quality.minDihedralDeg;
+    r.maxAspectRatio = quality.maxAspectRatio;
+    r.restCavity = cavityVolume(model, model.mesh.vertices);
+    r.cavityMin = m_observed > 0 ? e.cavityMin : double(m_sim.cavityVolume());
+    r.cavityMax = m_observed > 0 ? e.cavityMax : double(m_sim.cavityVolume());
+  }
+  if (r.blood) {
+    const BloodStats& b = r.bloodFinal = m_sim.bloodStats();
+    r.bloodLost = std::max(e.bloodLostMax, b.lost);
+    r.bloodInsideWall = std::max(e.bloodInsideWallMax, b.insideWall);
+    const bool window = e.lastSecondSteps > 0;
+    r.densityErrorMean = window ? e.densityErrorMeanSum / double(e.lastSecondSteps) : b.densityErrorMean;
+    r.densityErrorMax = window ? e.densityErrorMax : b.densityErrorMax;
+    r.bloodSpeedMax = std::max(e.bloodSpeedMax, b.maxSpeed);
+  }
+  return r;
+}
+
+}  // namespace hs::cardiac

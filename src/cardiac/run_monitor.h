@@ -1,0 +1,155 @@
+#pragma once
+// One watcher of a running HeartSimulation for every front end (`heartsim run`, `render`,
+// `bench`, `validate` and the viewer), so that they agree on what a failed simulation is and
+// read the same figures. After each step it checks the simulation's health (positions and
+// velocities finite, no inverted wall tetrahedron, blood not lost, blood not inside the wall)
+// and gathers the step's metrics (cavity volume, beats, valve flows, pressures, blood
+// statistics) and the run's extremes. The checks are pure functions over the simulation's
+// plain statistics, tested without running a heart.
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "cardiac/beat_metrics.h"
+#include "cardiac/blood.h"
+#include "cardiac/circulation.h"
+#include "cardiac/heart_simulation.h"
+#include "cardiac/lv_model.h"
+
+namespace hs::cardiac {
+
+enum class HealthCheck { Healthy, NonFinite, InvertedTets, BloodLost, BloodInsideWall };
+
+// Blood may leave the domain or sit inside the wall for a while without the run being wrong
+// (the thesis's one-way contact lets a few through): by default these are measured and
+// reported, not failures. A limit makes more than that many particles a failure.
+struct HealthLimits {
+  static constexpr std::size_t kUnlimited = std::numeric_limits<std::size_t>::max();
+  std::size_t bloodLost = kUnlimited;
+  std::size_t bloodInsideWall = kUnlimited;
+};
+
+// What went wrong (what and where); empty `what` when healthy.
+struct HealthIssue {
+  HealthCheck check = HealthCheck::Healthy;
+  std::string what;
+};
+
+// The verdict after a step: healthy, or the first failed check with when it was found.
+struct Verdict {
+  HealthIssue issue;
+  std::int64_t step = 0;
+  double time = 0;  // s
+  [[nodiscard]] bool healthy() const { return issue.check == HealthCheck::Healthy; }
+  // One line: "simulation became invalid at step 12 (t = 0.06 s): <what>".
+  [[nodiscard]] std::string message() const;
+};
+
+// "x = 0.1, y = 2, z = -0.3 m, AHA segment 4" (or the region's name) of a tet's first vertex.
+std::string tetLocation(const LvModel& model, std::span<const Vec3> positions, Index tet);
+// Non-finite state (`cavityFinite`: the cavity volume is a number), then inverted tets, located
+// on `model` at `positions` (the wall's particles).
+HealthIssue checkTissue(const TissueStats& tissue, bool cavityFinite, const LvModel* model,
+                        std::span<const Vec3> positions);
+HealthIssue checkBlood(const BloodStats& blood, const HealthLimits& limits);
+
+// One step's figures. `cavity`, `flows` and `flowStep` with a heart (flows with blood too);
+// `restDeviation` and `blood` only when the monitor gathers every column (MonitorSettings).
+struct StepSample {
+  std::int64_t step = 0;
+  double startTime = 0, time = 0;  // s, at the step's start and end
+  Phase phase = Phase::Rest;       // during the step
+  double cavity = 0;               // m^3, at the end
+  TissueStats tissue;
+  Real restDeviation = 0;
+  std::optional<BloodStats> blood;
+  ValveFlows flows;   // m^3 through each orifice in the step
+  FlowStep flowStep;  // valves, particles per region, mean pressures
+  bool circulation = false;
+  [[nodiscard]] double pressure(FlowRegion region) const { return flowStep.pressure[std::size_t(region)]; }
+};
+
+// Extremes and means over the steps of a run. Blood's density error counts over the last
+// simulated second only (from `lastSecondFrom`), once the fluid has settled. `heart`: the
+// samples carry the wall's figures (a heart, and a monitor that gathers them).
+struct RunExtremes {
+  double volumeErrorMax = 0;
+  double volumeErrorMeanSum = 0;  // sum over steps of the per-step mean
+  double cavityMin = std::numeric_limits<double>::infinity();
+  double cavityMax = -std::numeric_limits<double>::infinity();
+  std::size_t bloodLostMax = 0, bloodInsideWallMax = 0;
+  double bloodSpeedMax = 0;
+  double lastSecondFrom = 0;
+  double densityErrorMeanSum = 0, densityErrorMax = 0;
+  std::size_t lastSecondSteps = 0;
+  void add(const StepSample& sample, bool heart);
+};
+
+// What a finished run reports (summary.json's figures), read once at its end.
+struct RunSummary {
+  std::int64_t steps = 0;
+  double time = 0;
+  std::uint64_t stateHash = 0;
+  bool heart = false, blood = false;
+  // Heart.
+  std::size_t vertices = 0, tets = 0, surfaceTriangles = 0;
+  double volumeErrorMax = 0, volumeErrorMean = 0;
+  std::size_t invertedTets = 0;  // at the end
+  Real restDeviation = 0;        // at the end
+  Real minDihedralDeg = 0, maxAspectRatio = 0;
+  Real restCavity = 0;
+  double cavityMin = 0, cavityMax = 0;
+  BeatTracker beats{0};
+  // Blood: at the end, and the most over the run (lost, inside the wall, speed) or over its
+  // last second (density error).
+  BloodStats bloodFinal;
+  std::size_t bloodLost = 0, bloodInsideWall = 0;
+  double densityErrorMean = 0, densityErrorMax = 0, bloodSpeedMax = 0;
+};
+
+struct MonitorSettings {
+  bool pump = true;          // cavity, valve flows and pressures each step (with a heart)
+  bool beatList = true;      // every beat of the run in beats() (the viewer keeps its own, bounded)
+  bool everyColumn = false;  // also rest deviation and blood statistics each step (metrics.csv)
+  double endTime = 0;        // s, the run's planned end (its last second averages the density)
+  HealthLimits limits;
+  // Checks only: for front ends that read no figures (render, bench, validate).
+  static MonitorSettings healthOnly() { return {false, false, false, 0, {}}; }
+};
+
+class RunMonitor {
+ public:
+  // Reads the state before the next step (the first beat's end-diastolic volume).
+  RunMonitor(const HeartSimulation& sim, MonitorSettings settings = {});
+
+  // After each sim.step(): the checks, then (when healthy) the step's figures.
+  const Verdict& observe();
+  // The checks alone, on the state as it is (between steps or after a timed stretch).
+  const Verdict& checkNow();
+  // Closes the beat in progress at the end of the run.
+  void finish() { m_beats.finish(); }
+
+  [[nodiscard]] const Verdict& verdict() const { return m_verdict; }
+  // The last observed step (step 0: the state the monitor started from).
+  [[nodiscard]] const StepSample& last() const { return m_last; }
+  [[nodiscard]] const BeatTracker& beats() const { return m_beats; }
+  [[nodiscard]] const RunExtremes& extremes() const { return m_extremes; }
+  [[nodiscard]] std::int64_t observedSteps() const { return m_observed; }
+  [[nodiscard]] RunSummary summary() const;
+
+ private:
+  const HeartSimulation& m_sim;
+  MonitorSettings m_settings;
+  Verdict m_verdict;
+  StepSample m_last;
+  BeatTracker m_beats;
+  RunExtremes m_extremes;
+  std::int64_t m_observed = 0;
+  bool check(const TissueStats& tissue, double cavity);
+  [[nodiscard]] bool bloodLimited() const;
+  void gather(StepSample& sample) const;
+};
+
+}  // namespace hs::cardiac

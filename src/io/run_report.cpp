@@ -1,0 +1,125 @@
+#include "io/run_report.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace hs::io {
+namespace {
+
+// mL and L/min (cardiac::VolumeScale's clinical units), whatever the model's size: the keys
+// say so.
+constexpr cardiac::VolumeScale kClinical{};
+
+std::string hex(std::uint64_t value) {
+  char buffer[17];
+  std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(value));
+  return buffer;
+}
+
+// The wall's part: mesh, volume errors, cavity and beats.
+void addHeartReport(nlohmann::ordered_json& report, const cardiac::RunSummary& run) {
+  report["tissue"] = {
+      {"vertices", run.vertices},
+      {"tets", run.tets},
+      {"surface_triangles", run.surfaceTriangles},
+      {"volume_error_max", run.volumeErrorMax},
+      {"volume_error_mean", run.volumeErrorMean},
+      {"inverted_tets", run.invertedTets},
+      {"rest_deviation_final_rel", run.restDeviation},
+      {"min_dihedral_deg", run.minDihedralDeg},
+      {"max_aspect_ratio", run.maxAspectRatio},
+  };
+  nlohmann::ordered_json beatList = nlohmann::json::array();
+  for (const auto& b : run.beats.beats()) {
+    beatList.push_back({{"beat", b.index},
+                        {"start_s", b.startTime},
+                        {"edv_ml", b.edv * 1e6},
+                        {"esv_ml", b.esv * 1e6},
+                        {"stroke_volume_ml", b.strokeVolume() * 1e6},
+                        {"ejection_fraction", b.ejectionFraction()}});
+  }
+  report["cavity"] = {
+      {"volume_rest_m3", run.restCavity},
+      {"volume_min_m3", run.cavityMin},
+      {"volume_max_m3", run.cavityMax},
+      {"ejection_fraction", run.beats.meanEjectionFraction()},
+      {"beats", beatList},
+  };
+  report["beats"] = run.beats.beats().size();
+  report["heart"] = heartPumpReport(run.beats);
+}
+
+nlohmann::ordered_json bloodReport(const cardiac::RunSummary& run, int iterations) {
+  const cardiac::BloodStats& b = run.bloodFinal;
+  return {
+      {"particles", b.particles},
+      {"lost", run.bloodLost},
+      {"inside_wall", run.bloodInsideWall},
+      {"density_error_mean", run.densityErrorMean},
+      {"density_error_max", run.densityErrorMax},
+      {"full_neighbourhood", b.fullNeighbourhood},
+      {"mean_neighbours", b.meanNeighbours},
+      {"max_speed_m_s", b.maxSpeed},
+      {"max_speed_run_m_s", run.bloodSpeedMax},
+      {"iterations", iterations},
+  };
+}
+
+}  // namespace
+
+nlohmann::ordered_json heartPumpReport(const cardiac::BeatTracker& beats) {
+  const cardiac::BeatMeans m = beats.means();
+  return {{"beats", beats.beats().size()},
+          {"beats_averaged", m.count},
+          {"edv_ml", m.edv * kClinical.volume},
+          {"esv_ml", m.esv * kClinical.volume},
+          {"stroke_volume_ml", m.strokeVolume * kClinical.volume},
+          {"ejection_fraction", m.ejectionFraction},
+          {"cardiac_output_l_min", m.cardiacOutput * kClinical.output},
+          {"regurgitant_volume_ml", m.regurgitantVolume * kClinical.volume},
+          {"aortic_net_forward_ml", m.aorticNet * kClinical.volume}};
+}
+
+nlohmann::ordered_json runReport(const cardiac::Scenario& scenario, const RunTiming& timing,
+                                 const cardiac::RunSummary& run, const std::string& outputDir) {
+  nlohmann::ordered_json report;
+  report["scenario"] = scenario.name;
+  report["steps"] = run.steps;
+  report["sim_time_s"] = run.time;
+  report["dt_s"] = double(scenario.simulation.dt);
+  report["setup_s"] = timing.setupSeconds;
+  report["wall_s"] = timing.wallSeconds;
+  report["steps_per_s"] = timing.stepsPerSecond(run.steps);
+  report["threads"] = timing.threads;
+  report["iterations"] = scenario.simulation.iterations;
+  report["state_hash"] = hex(run.stateHash);
+  if (run.heart) addHeartReport(report, run);
+  if (run.blood) report["blood"] = bloodReport(run, scenario.blood.iterations);
+  report["output_dir"] = outputDir;
+  return report;
+}
+
+std::string runSummaryLine(const cardiac::Scenario& scenario, const RunTiming& timing,
+                           const cardiac::RunSummary& run, const std::string& outputDir) {
+  std::ostringstream s;
+  s << scenario.name << ": " << run.steps << " steps in " << timing.wallSeconds << " s ("
+    << timing.stepsPerSecond(run.steps) << " steps/s, " << timing.threads << " threads)";
+  if (run.heart) s << "; EF " << run.beats.meanEjectionFraction() << " over " << run.beats.beats().size() << " beats";
+  if (const cardiac::BeatMeans m = run.beats.means(); m.count > 0) {
+    // The pump in clinical units (m^3 at the thesis's scale), as the means over the complete
+    // beats after the first.
+    const cardiac::VolumeScale u = cardiac::volumeScaleFor(m.edv);
+    char pump[200];
+    std::snprintf(pump, sizeof pump, "stroke volume %.3g %s, cardiac output %.3g %s, regurgitation %.2g %s",
+                  m.strokeVolume * u.volume, u.volumeUnit, m.cardiacOutput * u.output, u.outputUnit,
+                  m.regurgitantVolume * u.volume, u.volumeUnit);
+    s << "; " << pump;
+  }
+  if (run.blood)
+    s << "; " << run.bloodFinal.particles << " blood particles, " << run.bloodLost << " lost, " << run.bloodInsideWall
+      << " inside the wall, density error " << run.densityErrorMean;
+  s << "; results in " << outputDir;
+  return s.str();
+}
+
+}  // namespace hs::io

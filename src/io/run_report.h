@@ -1,0 +1,33 @@
+#pragma once
+// summary.json of `heartsim run` (also its --json line) and the one-line summary on stderr:
+// the run's timing, the wall's mesh, volume errors, cavity and beats, the heart as a pump in
+// clinical units, and the blood's statistics, from a RunMonitor's RunSummary.
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cardiac/run_monitor.h"
+#include "cardiac/scenario.h"
+
+namespace hs::io {
+
+struct RunTiming {
+  double setupSeconds = 0;  // scenario and model
+  double wallSeconds = 0;   // stepping only
+  int threads = 1;
+  [[nodiscard]] double stepsPerSecond(std::int64_t steps) const {
+    return wallSeconds > 0 ? double(steps) / wallSeconds : 0.0;
+  }
+};
+
+nlohmann::ordered_json runReport(const cardiac::Scenario& scenario, const RunTiming& timing,
+                                 const cardiac::RunSummary& run, const std::string& outputDir);
+
+// "heart": beats and the means over complete beats after the first, in mL, L/min.
+nlohmann::ordered_json heartPumpReport(const cardiac::BeatTracker& beats);
+
+// "<scenario>: N steps in S s (R steps/s, T threads); EF ...; ...; results in DIR".
+std::string runSummaryLine(const cardiac::Scenario& scenario, const RunTiming& timing,
+                           const cardiac::RunSummary& run, const std::string& outputDir);
+
+}  // namespace hs::io
