@@ -7,14 +7,12 @@
 
 #include "cardiac/filling_force.h"
 #include "cardiac/lv_model.h"
+#include "thesis_model.h"
 
 namespace hs::cardiac {
 namespace {
 
-const LvModel& model() {
-  static const LvModel m = buildLvModel(LvGeometryParams{});
-  return m;
-}
+const LvModel& model() { return testing::thesisModel(); }
 const FlowPath& path() { return model().flowPath; }
 
 const BloodSettings kBlood{};

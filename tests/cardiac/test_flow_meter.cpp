@@ -10,14 +10,12 @@
 #include "cardiac/blood.h"
 #include "cardiac/flow_meter.h"
 #include "cardiac/lv_model.h"
+#include "thesis_model.h"
 
 namespace hs::cardiac {
 namespace {
 
-const FlowPath& path() {
-  static const LvModel m = buildLvModel(LvGeometryParams{});
-  return m.flowPath;
-}
+const FlowPath& path() { return testing::thesisModel().flowPath; }
 
 const BloodSettings kBlood{};
 const Vec3 kUp = Vec3::UnitY();

@@ -8,15 +8,13 @@
 #include <tuple>
 
 #include "cardiac/lv_model.h"
+#include "thesis_model.h"
 #include "cardiac/scenario.h"
 
 namespace hs::cardiac {
 namespace {
 
-const LvModel& model() {
-  static const LvModel m = buildLvModel(LvGeometryParams{});
-  return m;
-}
+const LvModel& model() { return testing::thesisModel(); }
 
 const FlowPath& path() { return model().flowPath; }
 

@@ -1,3 +1,4 @@
+// Over 400 lines on purpose: one test file per module, its cases sharing the file's set-up helpers.
 // Scenario files: built-ins, every key through --set, and one-line errors that name the file,
 // the line and the key.
 #include <gtest/gtest.h>

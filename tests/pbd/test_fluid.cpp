@@ -1,3 +1,4 @@
+// Over 400 lines on purpose: one test file per module, its cases sharing the file's set-up helpers.
 // Position Based Fluids (fluid.h): particle mass, rest-lattice density at h = 2d and h = 4d,
 // compressed-lattice correction direction and one Jacobi iteration, momentum of the
 // corrections, XSPH viscosity, and bitwise determinism across thread counts.

@@ -1,3 +1,4 @@
+// Over 400 lines on purpose: one test file per module, its cases sharing the file's set-up helpers.
 // NeighbourGrid against brute force: random clouds, exact cell-boundary and radius-boundary
 // cases, far outliers (hashed fallback), degenerate inputs, thread determinism of the CSR
 // lists, Morton reordering, and buffer reuse across rebuilds.

@@ -1,3 +1,4 @@
+// Over 400 lines on purpose: one test file per module, its cases sharing the file's set-up helpers.
 // ParticleTetCollider (particle_tet_collision.h): particles that end a step inside a
 // tetrahedral solid are pushed back out along their motion (thesis 4.4), checked against
 // brute force over every tet; untouched particles stay bitwise the same; same result for 1 and

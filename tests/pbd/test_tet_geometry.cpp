@@ -1,3 +1,4 @@
+// Over 400 lines on purpose: one test file per module, its cases sharing the file's set-up helpers.
 // Point-in-tet, Plücker ray–tet intersection and push-out against brute-force references in
 // double: signed volumes, point–triangle distances and Möller–Trumbore on the four faces.
 // Degenerate rays (through a vertex, an edge, in a face plane, zero or NaN direction) must give

@@ -1,0 +1,12 @@
+#pragma once
+// The thesis-scale LV model (LvGeometryParams defaults), built once for all tests of a binary.
+#include "cardiac/lv_model.h"
+
+namespace hs::cardiac::testing {
+
+inline const LvModel& thesisModel() {
+  static const LvModel model = buildLvModel(LvGeometryParams{});
+  return model;
+}
+
+}  // namespace hs::cardiac::testing
