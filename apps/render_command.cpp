@@ -16,6 +16,7 @@
 #include "cardiac/run_monitor.h"
 #include "contact_sheet.h"
 #include "exit_codes.h"
+#include "io/output_paths.h"
 #include "progress_bar.h"
 #include "render/gl_context.h"
 #include "render/renderer.h"
@@ -114,7 +115,7 @@ struct RenderPlan {
 RenderPlan planRender(const RenderOptions& options, const cardiac::Scenario& scenario) {
   const double duration = double(scenario.simulation.duration);
   RenderPlan plan;
-  plan.outDir = options.outDir.empty() ? fs::path("results") / scenario.name / "render" : fs::path(options.outDir);
+  plan.outDir = options.outDir.empty() ? io::defaultOutputFolder(scenario.name) / "render" : fs::path(options.outDir);
   plan.views = parseViews(options.views);
   plan.times = parseTimes(options.times.empty() ? "0," + formatTime(duration) : options.times, duration);
   std::tie(plan.width, plan.height) = parseSize(options.size);

@@ -11,6 +11,7 @@
 #include "cardiac/heart_simulation.h"
 #include "cardiac/run_monitor.h"
 #include "exit_codes.h"
+#include "io/output_paths.h"
 #include "io/metrics_csv.h"
 #include "io/run_report.h"
 #include "io/simulation_vtk.h"
@@ -123,7 +124,7 @@ int runCommand(const RunOptions& options) {
   if (!sim) return setupError;
   timing.setupSeconds = secondsSince(setupStart);
 
-  const fs::path outDir = options.outDir.empty() ? fs::path("results") / scenario->name : fs::path(options.outDir);
+  const fs::path outDir = options.outDir.empty() ? io::defaultOutputFolder(scenario->name) : fs::path(options.outDir);
   std::optional<io::MetricsCsvFile> csv = openOutputs(outDir, *sim);
   if (!csv) return kExitFailure;
   const std::optional<std::int64_t> steps = stepCountOrReport(*scenario, options.scenario);

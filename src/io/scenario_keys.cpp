@@ -30,7 +30,9 @@ constexpr const char* kMetres = "m";
 std::vector<KeySpec> scenarioKeys() {
   return {
       stringKey("scenario.name", HS_FIELD(name), true,
-                "Name shown in the output; defaults to the built-in name or the file name without .toml."),
+                "Name shown in the output; defaults to the built-in name or the file name without .toml. "
+                "The default output folder is results/<name> with every character other than letters, digits, - "
+                "and _ made _."),
       stringKey("scenario.description", HS_FIELD(description), false, "Free text describing the lesson."),
   };
 }

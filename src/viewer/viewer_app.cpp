@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "cardiac/heart_simulation.h"
+#include "io/output_paths.h"
 #include "io/scenario_file.h"
 #include "render/renderer.h"
 #include "render/scene.h"
@@ -321,7 +322,7 @@ class ViewerApp {
     std::string name;
     do {
       char text[96];
-      std::snprintf(text, sizeof text, "heartsim_%s_%03d.png", m_status.scenarioName.c_str(),
+      std::snprintf(text, sizeof text, "heartsim_%s_%03d.png", io::safeFileStem(m_status.scenarioName).c_str(),
                     ++m_screenshotCount);
       name = text;
     } while (std::filesystem::exists(name));

@@ -77,5 +77,19 @@ TEST(CliRun, WritesMetricsCsvAndVtkSeries) {
   EXPECT_GT(frame.tets.size(), 1000u);
 }
 
+// A scenario's name may hold anything; its default output folder stays directly inside
+// results/ of the working directory.
+TEST(CliRun, DefaultOutputFolderStaysInsideResults) {
+  const auto dir = scratchDir("output_name") / "work";
+  for (const auto& [name, folder] : {std::pair{"..", "__"}, std::pair{"/tmp/x", "_tmp_x"}, std::pair{"a b", "a_b"}}) {
+    const CliResult r = runHeartsim(std::string("run heart-only --duration 0.01 --set 'scenario.name=") + name + "'", dir);
+    ASSERT_EQ(r.exitCode, 0) << name << ": " << r.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "results" / folder / "summary.json")) << name;
+    EXPECT_TRUE(std::filesystem::exists(dir / "results" / folder / "metrics.csv")) << name;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "summary.json"));
+  EXPECT_FALSE(std::filesystem::exists(dir.parent_path() / "summary.json"));
+}
+
 }  // namespace
 }  // namespace hs::testing
