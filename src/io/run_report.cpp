@@ -42,7 +42,8 @@ void addHeartReport(nlohmann::ordered_json& report, const cardiac::RunSummary& r
       {"volume_rest_m3", run.restCavity},
       {"volume_min_m3", run.cavityMin},
       {"volume_max_m3", run.cavityMax},
-      {"ejection_fraction", run.beats.meanEjectionFraction()},
+      {"ejection_fraction", run.beats.beats().empty() ? nlohmann::ordered_json()
+                                                      : nlohmann::ordered_json(run.beats.meanEjectionFraction())},
       {"beats", beatList},
   };
   report["beats"] = run.beats.beats().size();
@@ -69,15 +70,19 @@ nlohmann::ordered_json bloodReport(const cardiac::RunSummary& run, int iteration
 
 nlohmann::ordered_json heartPumpReport(const cardiac::BeatTracker& beats) {
   const cardiac::BeatMeans m = beats.means();
+  // With no complete beat to average nothing was measured: null, never a 0 that reads as an
+  // empty heart.
+  const bool measured = m.count > 0;
+  auto figure = [measured](double value) { return measured ? nlohmann::ordered_json(value) : nlohmann::ordered_json(); };
   return {{"beats", beats.beats().size()},
           {"beats_averaged", m.count},
-          {"edv_ml", m.edv * kClinical.volume},
-          {"esv_ml", m.esv * kClinical.volume},
-          {"stroke_volume_ml", m.strokeVolume * kClinical.volume},
-          {"ejection_fraction", m.ejectionFraction},
-          {"cardiac_output_l_min", m.cardiacOutput * kClinical.output},
-          {"regurgitant_volume_ml", m.regurgitantVolume * kClinical.volume},
-          {"aortic_net_forward_ml", m.aorticNet * kClinical.volume}};
+          {"edv_ml", figure(m.edv * kClinical.volume)},
+          {"esv_ml", figure(m.esv * kClinical.volume)},
+          {"stroke_volume_ml", figure(m.strokeVolume * kClinical.volume)},
+          {"ejection_fraction", figure(m.ejectionFraction)},
+          {"cardiac_output_l_min", figure(m.cardiacOutput * kClinical.output)},
+          {"regurgitant_volume_ml", figure(m.regurgitantVolume * kClinical.volume)},
+          {"aortic_net_forward_ml", figure(m.aorticNet * kClinical.volume)}};
 }
 
 nlohmann::ordered_json runReport(const cardiac::Scenario& scenario, const RunTiming& timing,
@@ -104,7 +109,8 @@ std::string runSummaryLine(const cardiac::Scenario& scenario, const RunTiming& t
   std::ostringstream s;
   s << scenario.name << ": " << run.steps << " steps in " << timing.wallSeconds << " s ("
     << timing.stepsPerSecond(run.steps) << " steps/s, " << timing.threads << " threads)";
-  if (run.heart) s << "; EF " << run.beats.meanEjectionFraction() << " over " << run.beats.beats().size() << " beats";
+  if (run.heart && run.beats.beats().empty()) s << "; EF n/a (no beat)";
+  else if (run.heart) s << "; EF " << run.beats.meanEjectionFraction() << " over " << run.beats.beats().size() << " beats";
   if (const cardiac::BeatMeans m = run.beats.means(); m.count > 0) {
     // The pump in clinical units (m^3 at the thesis's scale), as the means over the complete
     // beats after the first.

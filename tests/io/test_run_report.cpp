@@ -95,5 +95,29 @@ TEST(RunReport, SummaryLineGivesThePumpInClinicalUnits) {
     EXPECT_NE(line.find(part), std::string::npos) << "missing '" << part << "' in: " << line;
 }
 
+// At 40 bpm a 1.5 s run has one beat and nothing to average: the pump's figures are not
+// measured and must read as null ("n/a"), never as a 0 that looks like an empty heart.
+TEST(RunReport, FiguresNotMeasuredAreNullNotZero) {
+  cardiac::RunSummary run = heartRun();
+  run.beats = cardiac::BeatTracker(120e-6, 0.01);
+  for (int k = 0; k < 150; ++k) run.beats.record(0.01 * k, k < 45 ? cardiac::Phase::Systole : cardiac::Phase::Diastole,
+                                                 k < 45 ? 50e-6 : 120e-6);
+  run.beats.finish();
+  const nlohmann::ordered_json one = runReport(scenario(), RunTiming{}, run, "d");
+  EXPECT_EQ(one["beats"], 1);
+  EXPECT_EQ(one["heart"]["beats_averaged"], 0);
+  for (const char* key : {"edv_ml", "esv_ml", "stroke_volume_ml", "ejection_fraction", "cardiac_output_l_min",
+                          "regurgitant_volume_ml", "aortic_net_forward_ml"})
+    EXPECT_TRUE(one["heart"][key].is_null()) << key << " = " << one["heart"][key];
+  EXPECT_TRUE(one["cavity"]["ejection_fraction"].is_number()) << "one beat was seen: its EF is measured";
+
+  run.beats = cardiac::BeatTracker(120e-6, 0.01);
+  const nlohmann::ordered_json none = runReport(scenario(), RunTiming{}, run, "d");
+  EXPECT_TRUE(none["cavity"]["ejection_fraction"].is_null());
+  const std::string line = runSummaryLine(scenario(), RunTiming{}, run, "d");
+  EXPECT_NE(line.find("EF n/a"), std::string::npos) << line;
+  EXPECT_EQ(line.find("stroke volume"), std::string::npos) << line;
+}
+
 }  // namespace
 }  // namespace hs::io
