@@ -1,6 +1,8 @@
 // heartsim: the command-line entry point. Subcommands: run, view, render, bench, validate.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -111,6 +113,34 @@ void addValidateCommand(CLI::App& app, Commands& c) {
   damBreakApp->add_flag("--json", validate.json, "Print one JSON report object on stdout");
 }
 
+std::string joinedNames(const std::vector<CLI::App*>& subcommands) {
+  std::string names;
+  for (const CLI::App* sub : subcommands) names += (names.empty() ? "" : ", ") + sub->get_name();
+  return names;
+}
+
+// A word where a subcommand is expected that names none ("heartsim frobnicate", "heartsim
+// validate foo"), as a one-line message with the valid names; nothing when every such word is
+// known (options and the rest are the parser's business).
+std::optional<std::string> unknownSubcommand(CLI::App& app, int argc, char** argv) {
+  CLI::App* level = &app;
+  std::string kind = "command";
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    const std::vector<CLI::App*> subcommands = level->get_subcommands([](CLI::App*) { return true; });
+    if (word.empty() || word[0] == '-' || subcommands.empty()) return std::nullopt;
+    const auto named = std::find_if(subcommands.begin(), subcommands.end(),
+                                    [&word](const CLI::App* sub) { return sub->check_name(word); });
+    if (named == subcommands.end()) return "unknown " + kind + " '" + word + "'; expected one of: " + joinedNames(subcommands);
+    level = *named;
+    kind = level->get_name() == "validate" ? "validation" : "command";
+  }
+  // The words ran out where a subcommand is still expected ("heartsim", "heartsim validate").
+  const std::vector<CLI::App*> subcommands = level->get_subcommands([](CLI::App*) { return true; });
+  if (subcommands.empty()) return std::nullopt;
+  return "missing " + kind + "; expected one of: " + joinedNames(subcommands);
+}
+
 // The parsed subcommand's exit code.
 int dispatch(Commands& c) {
   using namespace hs::app;
@@ -141,6 +171,10 @@ int main(int argc, char** argv) {
   addViewCommand(app, commands);
   addBenchCommand(app, commands);
   addValidateCommand(app, commands);
+  if (const std::optional<std::string> unknown = unknownSubcommand(app, argc, argv)) {
+    std::cerr << "heartsim: error: " << *unknown << " (see heartsim --help)\n";
+    return kExitBadInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -97,5 +97,15 @@ TEST(CliErrors, InvalidSimulationIsExitThreeWithWhenAndWhere) {
     EXPECT_NE(r.err.find(word), std::string::npos) << "missing '" << word << "' in: " << r.err;
 }
 
+// A word where a command or a validation is expected names itself and the valid ones.
+TEST(CliErrors, UnknownOrMissingSubcommandNamesTheValidOnes) {
+  const auto dir = scratchDir("subcommands");
+  expectBadInput(runHeartsim("frobnicate", dir), {"unknown command 'frobnicate'", "run, render, view, bench, validate"});
+  expectBadInput(runHeartsim("validate foo", dir), {"unknown validation 'foo'", "dam-break"});
+  expectBadInput(runHeartsim("validate", dir), {"missing validation", "dam-break"});
+  expectBadInput(runHeartsim("", dir), {"missing command", "run, render, view, bench, validate"});
+  expectBadInput(runHeartsim("bench --case nonsense", dir), {"nonsense", "tissue-lv"});
+}
+
 }  // namespace
 }  // namespace hs::testing
