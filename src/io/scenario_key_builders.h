@@ -125,7 +125,9 @@ KeySpec intKey(std::string name, F field, std::int64_t lo, std::string unit, std
   hi = std::min(hi, typeMax);
   KeySpec k =
       makeSpec(std::move(name), "integer", std::move(unit), intRangeText(lo, hi, typeMax), std::move(doc));
-  k.expect = withUnit("an integer" + spaced(k.range), k.unit);
+  // The message names the real limit even where the documented range leaves it out (the
+  // field's type).
+  k.expect = withUnit("an integer >= " + std::to_string(lo) + " and <= " + std::to_string(hi), k.unit);
   k.set = [field, lo, hi, expect = k.expect](Scenario& s, const toml::node& n) {
     field(s) = static_cast<T>(readInt(n, lo, hi, expect));
   };

@@ -393,8 +393,11 @@ TEST(ScenarioErrors, SetUnknownKey) {
 }
 
 TEST(ScenarioErrors, SetBadValue) {
-  expectParseError("", {"--set cycle.beats=abc: cycle.beats: expected an integer >= 0, got 'abc'"},
+  expectParseError("", {"--set cycle.beats=abc: cycle.beats: expected an integer >= 0 and <= 2147483647, got 'abc'"},
                    {"cycle.beats=abc"});
+  // An integer beyond its field's type names the real limit.
+  expectParseError("", {"cycle.seed: must be an integer >= 0 and <= 4294967295, got 9223372036854775807"},
+                   {"cycle.seed=9223372036854775807"});
   expectParseError("", {"--set simulation.dt=-1: simulation.dt: must be", "got -1"}, {"simulation.dt=-1"});
   expectParseError("", {"--set cycle.mode=fast: cycle.mode:", "got \"fast\""}, {"cycle.mode=fast"});
   expectParseError("", {"--set cycle.segments=[1,1]: cycle.segments:", "duplicates"},
