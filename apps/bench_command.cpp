@@ -16,6 +16,7 @@
 #include "cardiac/heart_simulation.h"
 #include "cardiac/run_monitor.h"
 #include "exit_codes.h"
+#include "simulation_setup.h"
 #include "io/scenario_file.h"
 
 namespace hs::app {
@@ -273,7 +274,7 @@ int benchCommand(const BenchOptions& options) {
     }
     report["cases"].push_back(r);
   }
-  if (options.json) std::cout << report.dump() << std::endl;
+  if (options.json && !writeStdoutOrReport(report.dump())) return kExitFailure;
   return kExitOk;
 }
 

@@ -89,17 +89,23 @@ std::pair<int, int> parseSize(const std::string& text) {
   return {w, h};
 }
 
+// A folder that cannot be made or written is a failure to write (exit 1, as for run), not bad
+// input.
+struct WriteFailure {
+  std::string message;
+};
+
 void prepareOutputDir(const fs::path& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))
-    throw BadInput{"--out: cannot create output directory '" + dir.string() + "': " +
+    throw WriteFailure{"--out: cannot create output directory '" + dir.string() + "': " +
                    (ec ? ec.message() : "not a directory")};
   // Permissions alone do not tell (root, read-only mounts): try to write.
   const fs::path probe = dir / ".heartsim-write-test";
   {
     std::ofstream test(probe);
-    if (!(test << "x")) throw BadInput{"--out: output directory '" + dir.string() + "' is not writable"};
+    if (!(test << "x")) throw WriteFailure{"--out: output directory '" + dir.string() + "' is not writable"};
   }
   fs::remove(probe, ec);
 }
@@ -240,6 +246,9 @@ int renderCommand(const RenderOptions& options) {
   } catch (const BadInput& e) {
     std::cerr << "heartsim: error: " << e.message << '\n';
     return kExitBadInput;
+  } catch (const WriteFailure& e) {
+    std::cerr << "heartsim: error: " << e.message << '\n';
+    return kExitFailure;
   }
   const int threads = options.threads > 0 ? options.threads : omp_get_num_procs();
   int setupError = kExitOk;

@@ -106,8 +106,8 @@ int report(const cardiac::Scenario& scenario, const io::RunTiming& timing, const
     std::cerr << "heartsim: error: " << (outDir / "summary.json").string() << ": write failed\n";
     return kExitFailure;
   }
-  if (json) std::cout << report.dump() << std::endl;
-  else std::cerr << "heartsim: " << io::runSummaryLine(scenario, timing, run, outDir.string()) << '\n';
+  if (json) return writeStdoutOrReport(report.dump()) ? kExitOk : kExitFailure;
+  std::cerr << "heartsim: " << io::runSummaryLine(scenario, timing, run, outDir.string()) << '\n';
   return kExitOk;
 }
 

@@ -51,4 +51,13 @@ inline bool createOutputDirOrReport(const std::filesystem::path& dir) {
   return !ec;
 }
 
+// One line of text (a --json report) on stdout, flushed; false after printing why it could not
+// be written (a full disk, a closed pipe: the caller exits with kExitFailure).
+inline bool writeStdoutOrReport(const std::string& text) {
+  std::cout << text << std::endl;
+  if (std::cout) return true;
+  std::cerr << "heartsim: error: stdout: cannot write the JSON report (disk full or output closed?)\n";
+  return false;
+}
+
 }  // namespace hs::app

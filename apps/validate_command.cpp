@@ -242,12 +242,14 @@ int validateDamBreakCommand(const ValidateOptions& options) {
     std::cerr << "heartsim: error: " << e.what() << '\n';
     return kExitFailure;
   }
-  if (options.json) std::cout << report.dump() << std::endl;
-  else
+  if (options.json) {
+    if (!writeStdoutOrReport(report.dump())) return kExitFailure;
+  } else {
     std::cerr << "heartsim: validate dam-break: " << report["particles"].get<std::size_t>() << " particles, "
               << steps << " steps in " << run.wallSeconds << " s; max relative front error up to T = "
               << kCompareUpToT << ": " << report["max_relative_error"].get<double>() << " (bound " << kErrorBound << ", shift " << kTimeShift << "): "
               << (pass ? "PASS" : "FAIL") << "; results in " << outDir.string() << '\n';
+  }
   return pass ? kExitOk : kExitValidationFailed;
 }
 

@@ -107,5 +107,19 @@ TEST(CliErrors, UnknownOrMissingSubcommandNamesTheValidOnes) {
   expectBadInput(runHeartsim("bench --case nonsense", dir), {"nonsense", "tissue-lv"});
 }
 
+// --json on a stdout that cannot take it (a full disk): exit 1 and a line saying so, for every
+// command that prints JSON.
+TEST(CliErrors, JsonOnAFullStdoutIsAWriteFailure) {
+  const auto dir = scratchDir("full_stdout");
+  for (const std::string command : {"run heart-only --duration 0.01 --out o --json", "bench --case tissue-lv --seconds 0.1 --json"}) {
+    const std::string line = "cd '" + dir.string() + "' && OMP_WAIT_POLICY=PASSIVE '" + HS_HEARTSIM_EXE + "' " + command +
+                             " >/dev/full 2>err.txt";
+    const int status = std::system(line.c_str());
+    ASSERT_TRUE(WIFEXITED(status)) << command;
+    EXPECT_EQ(WEXITSTATUS(status), 1) << command;
+    EXPECT_NE(readFile(dir / "err.txt").find("stdout: cannot write the JSON report"), std::string::npos) << command;
+  }
+}
+
 }  // namespace
 }  // namespace hs::testing

@@ -135,11 +135,12 @@ TEST_F(CliRender, TimeThatIsNotANumberIsRejected) {
 
 TEST_F(CliRender, BadSizeIsRejected) { expectBadInput("heart-only --times 0 --size 800 --out D", "--size: '800'"); }
 
-TEST_F(CliRender, UnwritableOutputFolderIsRejected) {
+// A write failure, exit 1 as for run (not bad input).
+TEST_F(CliRender, UnwritableOutputFolderIsAWriteFailure) {
   const auto dir = scratchDir("render_unwritable");
   { std::ofstream(dir / "a_file") << "x"; }
   const CliResult r = renderNoDisplay("heart-only --times 0 --out '" + (dir / "a_file" / "sub").string() + "'", dir);
-  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_EQ(r.exitCode, 1) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_NE(r.err.find("cannot create output directory"), std::string::npos) << r.err;
 }
