@@ -123,6 +123,11 @@ CardiacCycle::CardiacCycle(const CycleSettings& cycle, const LvModel& model, Ind
     m_relaxationSeconds = double(cycle.relaxationFraction) * period * (1.0 - double(cycle.systolicFraction));
   }
   std::vector<Index> beating = selectBeatingVertices(cycle, model);
+  // A heart told to beat with nothing to move would beat nothing without a word.
+  if (beating.empty())
+    throw std::invalid_argument("cycle.sphere: the beating region (cycle.segments, cycle.vertices and [cycle.sphere]) "
+                                "selects no wall vertex that can move; expected a sphere that reaches the wall, "
+                                "segments 1-17 or myocardium vertex ids");
   const BeatClockSettings main = clockSettings(cycle);
   if (cycle.pattern != BeatPattern::Inconsistent) {
     m_regions.push_back({toParticles(beating, firstParticle), BeatClock(main), {}, restOf(beating, model), {}});

@@ -121,5 +121,11 @@ TEST(CliErrors, JsonOnAFullStdoutIsAWriteFailure) {
   }
 }
 
+TEST(CliErrors, BeatingRegionThatSelectsNothingIsBadInput) {
+  const auto dir = scratchDir("empty_region");
+  expectBadInput(runHeartsim("run heart-only --set 'cycle.sphere.centre=[100,100,100]' --set cycle.sphere.radius=0.1", dir),
+                 {"heart-only", "cycle.sphere", "selects no wall vertex"});
+}
+
 }  // namespace
 }  // namespace hs::testing

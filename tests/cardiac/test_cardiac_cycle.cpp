@@ -174,5 +174,20 @@ TEST(BeatPatterns, InconsistentRegionsBeatOutOfStep) {
   EXPECT_EQ(normal.regions().size(), 1u);
 }
 
+TEST(BeatingRegion, ARegionThatSelectsNoVertexIsRefused) {
+  CycleSettings c;
+  c.sphereEnabled = true;
+  c.sphereCentre = Vec3(100, 100, 100);  // far from the heart
+  c.sphereRadius = Real(0.1);
+  try {
+    CardiacCycle cycle(c, model(), 0);
+    FAIL() << "a region with no vertex was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("selects no wall vertex"), std::string::npos) << e.what();
+  }
+  c.enabled = false;  // nothing beats anyway: accepted
+  EXPECT_NO_THROW(CardiacCycle(c, model(), 0));
+}
+
 }  // namespace
 }  // namespace hs::cardiac
