@@ -6,6 +6,7 @@
 #include <map>
 #include <fstream>
 #include <iterator>
+#include <limits>
 
 #include "io/scenario_internal.h"
 
@@ -167,6 +168,35 @@ void applyOverride(ParseState& st, const std::string& text) {
   applyTable(st, *node->as_table(), key, origin);
 }
 
+// Blood settings the scene cannot hold, refused before any work. Gravity: from rest, one step
+// moves a particle g dt^2; beyond a tenth of the spacing the density solve cannot keep up and
+// blood is lost through the walls. Support radius: a kernel wider than the space the blood
+// lives in (the container's smallest side, the cavity's short-axis radius) makes every
+// particle everybody's neighbour.
+void validateBloodScale(const ParseState& st) {
+  const cardiac::Scenario& sc = st.scenario;
+  const auto& b = sc.blood;
+  auto number = [](double v) { return detail::formatNumber(v); };
+  const double dt = double(sc.simulation.dt);
+  const double gravityMax = 0.1 * double(b.spacing) / (dt * dt);
+  if (double(sc.simulation.gravity.norm()) > gravityMax)
+    fail(st.at("simulation.gravity") + ": simulation.gravity: |g| = " + number(double(sc.simulation.gravity.norm())) +
+         " m/s^2 moves blood more than a tenth of blood.spacing in one step of simulation.dt; expected |g| <= 0.1 "
+         "spacing / dt^2 = " + number(gravityMax) + " m/s^2");
+  double room = std::numeric_limits<double>::infinity();
+  std::string where;
+  if (sc.container.enabled) {
+    room = double((sc.container.max - sc.container.min).minCoeff());
+    where = "the container's smallest side";
+  } else if (sc.heart) {
+    room = double(sc.geometry.endoRadius);
+    where = "the cavity's radius (model.endo_radius)";
+  }
+  if (double(b.supportRadius) > room)
+    fail(st.at("blood.support_radius") + ": blood.support_radius: must not exceed " + where + " (" + number(room) +
+         " m), got " + number(double(b.supportRadius)) + " m");
+}
+
 // Checks that involve more than one key.
 void validate(const ParseState& st) {
   const auto& c = st.scenario.cycle;
@@ -178,6 +208,7 @@ void validate(const ParseState& st) {
   if (b.supportRadius <= b.spacing)
     fail(st.at("blood.support_radius") + ": blood.support_radius: must be larger than blood.spacing (" +
          number(b.spacing) + " m) so that each particle has neighbours, got " + number(b.supportRadius) + " m");
+  if (b.enabled) validateBloodScale(st);
   for (int a = 0; a < 3; ++a) {
     if (b.blockMax[a] <= b.blockMin[a])
       fail(st.at("blood.block_max") + ": blood.block_max: must be larger than blood.block_min on every axis, got " +

@@ -411,5 +411,20 @@ TEST(ScenarioErrors, SetIsAppliedAfterTheFile) {
   EXPECT_EQ(s.cycle.beats, 5);
 }
 
+// Settings under which the physics means nothing are refused before any work, naming the key
+// and the bound.
+TEST(ScenarioErrors, GravityTheBloodCannotHoldIsRefused) {
+  expectParseError("", {"--set simulation.gravity=[0,-1e6,0]: simulation.gravity:", "expected |g| <= 0.1 spacing / dt^2"},
+                   {"blood.enabled=true", "simulation.gravity=[0,-1e6,0]"});
+  EXPECT_NO_THROW(loadScenario("normal", {"simulation.gravity=[0,-98.1,0]"}));  // 10 g still holds
+}
+
+TEST(ScenarioErrors, SupportRadiusBeyondTheBloodsRoomIsRefused) {
+  expectParseError("", {"blood.support_radius: must not exceed the cavity's radius (model.endo_radius)"},
+                   {"blood.enabled=true", "blood.support_radius=1e18"});
+  expectParseError("", {"blood.support_radius: must not exceed the container's smallest side"},
+                   {"blood.enabled=true", "model.enabled=false", "container.enabled=true", "blood.support_radius=1e18"});
+}
+
 }  // namespace
 }  // namespace hs::io
