@@ -77,6 +77,8 @@ int simulate(cardiac::HeartSimulation& sim, cardiac::RunMonitor& monitor, std::i
       if (const cardiac::Verdict& verdict = monitor.observe(); !verdict.healthy()) {
         progress.finish();
         std::cerr << "heartsim: error: " << verdict.message() << '\n';
+        monitor.finish();
+        csv.close();  // the rows up to the failure stay readable
         return kExitInvalidSimulation;
       }
       csv.add(monitor.last());
@@ -93,6 +95,18 @@ int simulate(cardiac::HeartSimulation& sim, cardiac::RunMonitor& monitor, std::i
     return kExitFailure;
   }
   return kExitOk;
+}
+
+// A run that became invalid still leaves its summary.json, with what failed, where and when
+// under "failure"; stdout stays empty and the exit code says it failed.
+void writeFailureSummary(const cardiac::Scenario& scenario, const io::RunTiming& timing,
+                         const cardiac::RunMonitor& monitor, const fs::path& outDir) {
+  nlohmann::ordered_json report = io::runReport(scenario, timing, monitor.summary(), outDir.string());
+  const cardiac::Verdict& verdict = monitor.verdict();
+  report["failure"] = {{"message", verdict.message()}, {"step", verdict.step}, {"time_s", verdict.time}};
+  std::ofstream summary(outDir / "summary.json");
+  summary << report.dump(2) << '\n';
+  if (!summary) std::cerr << "heartsim: error: " << (outDir / "summary.json").string() << ": write failed\n";
 }
 
 // summary.json, then the same report on stdout (--json) or one line on stderr.
@@ -138,6 +152,7 @@ int runCommand(const RunOptions& options) {
   if (options.vtk || scenario->output.vtk) vtk.emplace(outDir, sim->hasHeart(), sim->hasBlood());
   const int simulated = simulate(*sim, monitor, *steps, *csv, vtk ? &*vtk : nullptr, scenario->output.vtkEvery,
                                  timing.wallSeconds);
+  if (simulated == kExitInvalidSimulation) writeFailureSummary(*scenario, timing, monitor, outDir);
   if (simulated != kExitOk) return simulated;
   return report(*scenario, timing, monitor, outDir, options.json);
 }

@@ -95,6 +95,10 @@ TEST(CliErrors, InvalidSimulationIsExitThreeWithWhenAndWhere) {
   EXPECT_EQ(lineCount(r.err), 1) << r.err;
   for (const char* word : {"step 1", "inverted", "tet ", "x = "})
     EXPECT_NE(r.err.find(word), std::string::npos) << "missing '" << word << "' in: " << r.err;
+  // The summary is still written, with the reason and where.
+  const std::string summary = readFile(dir / "results" / "heart-only" / "summary.json");
+  for (const char* word : {"\"failure\"", "inverted", "\"step\": 1", "\"time_s\""})
+    EXPECT_NE(summary.find(word), std::string::npos) << "missing '" << word << "' in: " << summary;
 }
 
 // A word where a command or a validation is expected names itself and the valid ones.
