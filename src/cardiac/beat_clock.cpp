@@ -45,7 +45,6 @@ int BeatClock::diastoleLength(Real dt) const {
                                                   : double(regular.systole + regular.diastole);
     return int(std::lround(cycle * double(m_settings.startDelay)));
   }
-  if (m_diastoleShare == 1) return regular.diastole;
   return std::max(1, int(std::lround(regular.diastole * m_diastoleShare)));
 }
 
