@@ -161,9 +161,10 @@ std::optional<Rect> placeLegend(const PlotSpec& spec, const PlotFrame& frame, co
   const Rect& a = frame.area();
   const int left = a.x + m.pad, right = a.x + a.width - m.pad - width;
   const int top = a.y + m.pad, bottom = a.y + a.height - m.pad - height;
-  // Preference order on ties: top-right, top-left, bottom-right, bottom-left.
+  // Preference order on ties: top-right, top-left, bottom-right, bottom-left (LegendCorner's order).
   const std::array<Rect, 4> candidates{Rect{right, top, width, height}, Rect{left, top, width, height},
                                        Rect{right, bottom, width, height}, Rect{left, bottom, width, height}};
+  if (spec.legendCorner) return candidates[static_cast<std::size_t>(*spec.legendCorner)];
   const std::vector<PlotFrame::Point> samples = dataSamples(spec, frame);
   std::size_t best = 0, bestHidden = std::numeric_limits<std::size_t>::max();
   for (std::size_t c = 0; c < candidates.size(); ++c) {
@@ -276,6 +277,14 @@ void validatePlotSpec(const PlotSpec& spec) {
                                 std::to_string(spec.height) + " must be between " + std::to_string(kMinSize) +
                                 " and " + std::to_string(kMaxSize) + " pixels");
   }
+  if (spec.textScale && (*spec.textScale < 1 || *spec.textScale > 8)) {
+    throw std::invalid_argument("PlotSpec: textScale " + std::to_string(*spec.textScale) +
+                                " must be between 1 and 8");
+  }
+  if (spec.minAreaLeft < 0) {
+    throw std::invalid_argument("PlotSpec: minAreaLeft " + std::to_string(spec.minAreaLeft) +
+                                " must not be negative");
+  }
   validateRange(spec.xRange, "xRange");
   validateRange(spec.yRange, "yRange");
   for (std::size_t s = 0; s < spec.series.size(); ++s) {
@@ -297,7 +306,7 @@ void validatePlotSpec(const PlotSpec& spec) {
 
 PlotFrame::PlotFrame(const PlotSpec& spec) {
   validatePlotSpec(spec);
-  m_textScale = textScaleFor(spec.width, spec.height);
+  m_textScale = spec.textScale.value_or(textScaleFor(spec.width, spec.height));
   const Metrics m(m_textScale);
   std::tie(m_xMin, m_xMax) = spec.xRange ? *spec.xRange : autoRange(spec, false, std::nullopt);
   std::tie(m_yMin, m_yMax) = spec.yRange ? *spec.yRange : autoRange(spec, true, spec.xRange);
@@ -312,8 +321,9 @@ PlotFrame::PlotFrame(const PlotSpec& spec) {
   int yTickWidth = 0;
   for (const std::string& label : m_yTicks.labels)
     yTickWidth = std::max(yTickWidth, Image::textWidth(label, m.s));
-  const int left = m.pad + (spec.yLabel.empty() ? 0 : Metrics::glyphBox(m.s) + 3 * m.pad / 2) + yTickWidth +
-                   m.pad / 2 + m.tick + m.frameWidth;
+  const int left =
+      std::max(spec.minAreaLeft, m.pad + (spec.yLabel.empty() ? 0 : Metrics::glyphBox(m.s) + 3 * m.pad / 2) +
+                                     yTickWidth + m.pad / 2 + m.tick + m.frameWidth);
   const int right = 3 * m.pad;
   m_area = {left, top, spec.width - left - right, height};
   if (m_area.width < 16 || m_area.height < 16) {

@@ -29,6 +29,8 @@ struct Series {
   MarkerShape marker = MarkerShape::Circle;
 };
 
+enum class LegendCorner { TopRight, TopLeft, BottomRight, BottomLeft };
+
 struct PlotSpec {
   std::string title, xLabel, yLabel;
   std::vector<Series> series;
@@ -36,10 +38,20 @@ struct PlotSpec {
   // (with xRange given, the automatic y range uses only the points inside it).
   std::optional<std::pair<double, double>> xRange, yRange;
   int width = 900, height = 600;  // pixels
+  // Font pixel size (1..8) of the labels; when absent it grows with the smaller image side. Panels
+  // stacked into one figure give the same value so their text matches although their heights differ.
+  std::optional<int> textScale;
+  // Least number of pixel columns left of the plot area (0: just room for the labels). Panels stacked
+  // over a shared x axis give the largest of their own left margins, so their time axes line up.
+  int minAreaLeft = 0;
+  // The legend's corner of the plot area; when absent, the corner that hides the fewest data
+  // (which counts reference lines as data: a caller that made room above its curves says where).
+  std::optional<LegendCorner> legendCorner;
 };
 
 // Throws std::invalid_argument naming the series when x and y differ in size or hold a
-// non-finite value, and for an empty/inverted/non-finite range or a size too small to plot.
+// non-finite value, and for an empty/inverted/non-finite range, a size too small to plot, a text
+// scale outside 1..8 or a negative minAreaLeft.
 void validatePlotSpec(const PlotSpec& spec);
 
 struct AxisTicks {
@@ -68,8 +80,8 @@ class PlotFrame {
   std::pair<double, double> yRange() const { return {m_yMin, m_yMax}; }
   const AxisTicks& xTicks() const { return m_xTicks; }
   const AxisTicks& yTicks() const { return m_yTicks; }
-  // Legend box inside the plot area, in the corner that hides the fewest data; none when no
-  // series has a label.
+  // Legend box inside the plot area, in spec.legendCorner or else the corner that hides the
+  // fewest data; none when no series has a label.
   const std::optional<Rect>& legend() const { return m_legend; }
   // Size of a font pixel for tick and axis labels (grows with the image).
   int textScale() const { return m_textScale; }

@@ -232,5 +232,51 @@ TEST(Plot, SmallAndLargeImagesStillLayOut) {
   }
 }
 
+TEST(Plot, LegendGoesToTheCornerAsked) {
+  PlotSpec spec = exampleSpec();
+  const Rect automatic = *PlotFrame(spec).legend();  // top-left: the curve rises to the right
+  spec.legendCorner = LegendCorner::TopRight;
+  const PlotFrame frame(spec);
+  const Rect& area = frame.area();
+  const Rect asked = *frame.legend();
+  EXPECT_EQ(asked.width, automatic.width);
+  EXPECT_EQ(asked.y, automatic.y);
+  EXPECT_GT(asked.x + asked.width / 2, area.x + area.width / 2);
+  EXPECT_LT(automatic.x + automatic.width / 2, area.x + area.width / 2);
+  spec.legendCorner = LegendCorner::BottomLeft;
+  EXPECT_EQ(PlotFrame(spec).legend()->x, automatic.x);
+  EXPECT_GT(PlotFrame(spec).legend()->y, area.y + area.height / 2);
+  const Image image = renderPlot(spec);
+  EXPECT_GT(countColour(image, *PlotFrame(spec).legend(), spec.series[1].colour), 4u);
+}
+
+TEST(Plot, StackedPanelsShareTextScaleAndLeftEdge) {
+  // Two panels of one figure: different heights and y tick widths, yet the same font and the
+  // same plot-area columns once each takes the larger left margin.
+  PlotSpec top = exampleSpec(), bottom = exampleSpec();
+  top.height = 300;
+  bottom.height = 500;
+  bottom.yRange = {-1000.0, 1000.0};  // wider tick labels than "0.0".."5.0"
+  EXPECT_NE(PlotFrame(top).textScale(), PlotFrame(bottom).textScale());
+  top.textScale = bottom.textScale = 2;
+  EXPECT_EQ(PlotFrame(top).textScale(), 2);
+  EXPECT_EQ(PlotFrame(bottom).textScale(), 2);
+  EXPECT_LT(PlotFrame(top).area().x, PlotFrame(bottom).area().x);
+  const int left = std::max(PlotFrame(top).area().x, PlotFrame(bottom).area().x);
+  top.minAreaLeft = bottom.minAreaLeft = left;
+  EXPECT_EQ(PlotFrame(top).area().x, left);
+  EXPECT_EQ(PlotFrame(bottom).area().x, left);
+  EXPECT_EQ(PlotFrame(top).area().width, PlotFrame(bottom).area().width);
+  EXPECT_EQ(PlotFrame(top).toPixel(1.5, 0.0).x, PlotFrame(bottom).toPixel(1.5, 0.0).x);
+
+  top.textScale = 0;
+  EXPECT_NE(hs::testing::thrownMessage<std::invalid_argument>([&] { PlotFrame{top}; }).find("textScale 0"),
+            std::string::npos);
+  top.textScale.reset();
+  top.minAreaLeft = -1;
+  EXPECT_NE(hs::testing::thrownMessage<std::invalid_argument>([&] { PlotFrame{top}; }).find("minAreaLeft"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace hs::viz
