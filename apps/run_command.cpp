@@ -44,7 +44,7 @@ std::optional<cardiac::Scenario> runScenario(const RunOptions& options) {
 std::optional<io::MetricsCsvFile> openOutputs(const fs::path& outDir, const cardiac::HeartSimulation& sim) {
   if (!createOutputDirOrReport(outDir)) return std::nullopt;
   try {
-    return io::MetricsCsvFile(outDir / "metrics.csv", {sim.hasHeart(), sim.hasBlood(), sim.circulation() != nullptr});
+    return io::MetricsCsvFile(outDir / "metrics.csv", {sim.hasHeart(), sim.hasBlood(), sim.circulation() != nullptr, sim.lumped() != nullptr});
   } catch (const std::runtime_error& e) {
     std::cerr << "heartsim: error: " << e.what() << '\n';
     return std::nullopt;

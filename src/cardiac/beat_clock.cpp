@@ -80,7 +80,10 @@ void BeatClock::enterDiastole() {
   m_phase = Phase::Diastole;
   // Irregular beating: the next contraction comes early, before the wall has relaxed.
   m_diastoleShare = 1;
-  if (m_settings.irregularity > 0) {
+  if (m_settings.irregularity > 0 && m_settings.irregularBothWays) {
+    std::uniform_real_distribution<double> share(-double(m_settings.irregularity), double(m_settings.irregularity));
+    m_diastoleShare = 1.0 + share(m_random);
+  } else if (m_settings.irregularity > 0) {
     std::uniform_real_distribution<double> share(0.0, double(m_settings.irregularity));
     m_diastoleShare = 1.0 - share(m_random);
   }

@@ -35,6 +35,9 @@ struct BeatClockSettings {
   // Both.
   int beats = 0;          // systoles to perform, then rest; 0 = no limit
   Real irregularity = 0;  // each diastole shortened by a random share in [0, irregularity)
+  // Irregular beating varies each diastole both ways instead, by a share in (-irregularity,
+  // irregularity): the mean rate stays, as in atrial fibrillation.
+  bool irregularBothWays = false;
   unsigned seed = 1;
   // Phase offset: the first systole starts after this share of one cycle (systole plus
   // diastole) spent relaxed.

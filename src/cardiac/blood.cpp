@@ -82,6 +82,26 @@ std::vector<Vec3> vesselLattice(const Scenario& scenario, const LvModel& model) 
   return x;
 }
 
+// Lattice sites of the whole heart's lumen, a particle radius in from the walls: the cavity's
+// half spheroid (y below the base plane) and the two vessels' cylinders from the base plane
+// to their far ends. One lattice, so no two sites coincide where they meet.
+std::vector<Vec3> heartLattice(const Scenario& scenario, const LvModel& model) {
+  const Real d = scenario.blood.spacing, r = scenario.blood.radius;
+  const LvGeometryParams& g = scenario.geometry;
+  const FlowPath& path = model.flowPath;
+  const Real a = g.endoRadius - r, c = g.endoLongAxis - r;
+  const Real top = std::max(path.inflowTop, path.outflowTop);
+  std::vector<Vec3> x;
+  if (!(a > 0 && c > 0)) return x;
+  for (const Vec3& p : pbd::fluidBlock(Vec3(-g.endoRadius, -c, -g.endoRadius), Vec3(g.endoRadius, top, g.endoRadius), d)) {
+    const bool cavity = p.y() <= -r && (p.x() / a) * (p.x() / a) + (p.y() / c) * (p.y() / c) + (p.z() / a) * (p.z() / a) <= 1;
+    const bool inflow = p.y() > -r && p.y() <= path.inflowTop - r && path.mitral.radial(p) <= path.mitral.radius - r;
+    const bool outflow = p.y() > -r && p.y() <= path.outflowTop - r && path.aortic.radial(p) <= path.aortic.radius - r;
+    if (cavity || inflow || outflow) x.push_back(p);
+  }
+  return x;
+}
+
 double physicalMemoryBytes() {
   const long pages = sysconf(_SC_PHYS_PAGES);
   const long size = sysconf(_SC_PAGE_SIZE);
@@ -89,6 +109,16 @@ double physicalMemoryBytes() {
 }
 
 }  // namespace
+
+VesselCapacity vesselCapacity(const Scenario& scenario, const LvModel& model) {
+  VesselCapacity capacity;
+  for (const Vec3& x : heartLattice(scenario, model)) {
+    const FlowRegion region = model.flowPath.classify(x, scenario.blood.radius, scenario.blood.spacing);
+    capacity.inflow += region == FlowRegion::InflowVessel;
+    capacity.outflow += region == FlowRegion::OutflowVessel;
+  }
+  return capacity;
+}
 
 pbd::FluidSettings bloodFluidSettings(const BloodSettings& b) {
   pbd::FluidSettings f;
@@ -147,8 +177,10 @@ std::vector<Vec3> bloodStartPositions(const Scenario& scenario, const LvModel* m
   const BloodSettings& b = scenario.blood;
   if (b.start == BloodSettings::Start::Chamber && !scenario.heart)
     throw std::invalid_argument("blood.start: \"chamber\" needs a heart (model.enabled = true); use \"block\"");
-  if (b.start == BloodSettings::Start::Vessel && (!scenario.heart || !model))
-    throw std::invalid_argument("blood.start: \"vessel\" needs a heart (model.enabled = true); use \"block\"");
+  if ((b.start == BloodSettings::Start::Vessel || b.start == BloodSettings::Start::Heart) && (!scenario.heart || !model))
+    throw std::invalid_argument(std::string("blood.start: \"") +
+                                (b.start == BloodSettings::Start::Heart ? "heart" : "vessel") +
+                                "\" needs a heart (model.enabled = true); use \"block\"");
   // Count the sites before making any: a tiny spacing must fail here, not in the allocator.
   double sites = 1;
   if (b.start != BloodSettings::Start::Block) {  // cavity and vessel bounding boxes, an upper bound
@@ -180,8 +212,9 @@ std::vector<Vec3> bloodStartPositions(const Scenario& scenario, const LvModel* m
         throw std::invalid_argument("blood.block_min: the start block " + vec(b.blockMin) + " - " + vec(b.blockMax) +
                                     " m must lie inside the container " + vec(c.min) + " - " + vec(c.max) + " m");
   }
-  if (b.start == BloodSettings::Start::Vessel) {
-    std::vector<Vec3> x = vesselLattice(scenario, *model);
+  if (b.start == BloodSettings::Start::Vessel || b.start == BloodSettings::Start::Heart) {
+    std::vector<Vec3> x =
+        b.start == BloodSettings::Start::Heart ? heartLattice(scenario, *model) : vesselLattice(scenario, *model);
     if (b.particles > 0) {
       // With the closed loop the rest waits in the body and enters through the inflow vessel
       // (HeartSimulation); without it every particle needs a site.

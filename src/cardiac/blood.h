@@ -33,10 +33,19 @@ pbd::FluidStepSettings bloodSolverSettings(const Scenario& scenario);
 // all of them (blood.particles = 0) or the first blood.particles sites, lowest y first.
 // Throws std::invalid_argument when the block holds too few sites, when the start block is
 // not inside the container, or when the particles would not fit in this machine's memory.
+// blood.start = "heart" fills the cavity and both vessels (a radius from their walls);
 // blood.start = "vessel" fills the inflow vessel of `model` (from its bottom up), then the
 // cavity from the base down; it needs the model. With circulation.loop it may return fewer
 // sites than blood.particles: the rest start outside the model, waiting to enter.
 std::vector<pbd::Vec3> bloodStartPositions(const Scenario& scenario, const LvModel* model = nullptr);
+
+// Lattice sites (blood.spacing, a particle radius in from the walls) of each vessel's lumen
+// between its valve plane and its far end: what a full vessel holds (blood.start = "heart"
+// fills them so).
+struct VesselCapacity {
+  std::size_t inflow = 0, outflow = 0;
+};
+VesselCapacity vesselCapacity(const Scenario& scenario, const LvModel& model);
 
 // Rough bytes per blood particle of a run (state, solver buffers, neighbour lists of about
 // `neighbours` entries), for the memory check above.

@@ -57,8 +57,47 @@ BloodLoop::Turnover BloodLoop::circulate(pbd::Particles& particles, Index first)
       ++turnover.returned;
     }
   }
+  if (m_outletMetered) turnover.returned += meterOutlet(particles, first);
   turnover.reentered = reenter(particles, first);
   return turnover;
+}
+
+void BloodLoop::allowOutflow(double volume, double particleVolume) {
+  m_outletMetered = true;
+  // What the 3D blood did not take in time is not carried over beyond a few particles: blood
+  // that lagged behind the lumped flow must not drain the vessel later, when the valve shuts.
+  const double step = volume / particleVolume;
+  m_outletAllowance = std::clamp(m_outletAllowance + step, 0.0, std::max(step, 0.0) + kOutletCarryOver);
+}
+
+Orifice BloodLoop::outletLid() const {
+  Orifice lid = m_path.aortic;
+  lid.centre.y() = m_path.outflowTop;
+  lid.radius += m_spacing;
+  return lid;
+}
+
+// Parks the blood just under the outlet's lid, highest first, as far as the allowance goes.
+std::size_t BloodLoop::meterOutlet(pbd::Particles& particles, Index first) {
+  const Orifice& aortic = m_path.aortic;
+  m_underLid.clear();
+  for (std::size_t i = first; i < particles.size(); ++i) {
+    const Vec3& x = particles.position[i];
+    if (particles.active(i) && x.y() > m_path.outflowTop - 2 * m_spacing && aortic.radial(x) < aortic.radius + m_spacing)
+      m_underLid.push_back(Index(i));
+  }
+  std::sort(m_underLid.begin(), m_underLid.end(), [&](Index a, Index b) {
+    return particles.position[a].y() > particles.position[b].y() ||
+           (particles.position[a].y() == particles.position[b].y() && particles.id[a] < particles.id[b]);
+  });
+  std::size_t parked = 0;
+  for (Index i : m_underLid) {
+    if (m_outletAllowance < 1) break;
+    park(particles, i);
+    m_outletAllowance -= 1;
+    ++parked;
+  }
+  return parked;
 }
 
 std::size_t BloodLoop::reenter(pbd::Particles& particles, Index first) {

@@ -32,13 +32,28 @@ class BloodLoop {
 
   [[nodiscard]] std::size_t waiting() const { return m_queue.size(); }
 
+  // The outflow vessel's far end as the aorta's boundary (lumped circulation): a closed lid
+  // (Valves::closeOutlet) under which blood leaves only as the lumped aortic flow carries it
+  // away. Each step adds that flow's volume (m^3) to an allowance counted in particles; the
+  // particles within two spacings under the lid are parked, highest first, while it holds one.
+  // So the vessel does not drain when the valve shuts or the column runs on. Unused allowance
+  // carries over a few particles only. Without a call the end is open.
+  void allowOutflow(double volume, double particleVolume);
+  // The lid that allowOutflow's blood leaves under: the vessel's end disc, a spacing wider.
+  [[nodiscard]] Orifice outletLid() const;
+
  private:
   [[nodiscard]] Vec3 parkingSite(std::size_t slot) const;
   void park(pbd::Particles& particles, Index particle);
   std::size_t reenter(pbd::Particles& particles, Index first);
 
+  std::size_t meterOutlet(pbd::Particles& particles, Index first);
+
   FlowPath m_path;
   Real m_spacing;
+  static constexpr double kOutletCarryOver = 10;  // particles
+  bool m_outletMetered = false;
+  double m_outletAllowance = 0;  // particles
   std::vector<Vec3> m_inletSites;  // lattice sites across the inflow vessel's far end
   Vec3 m_parkingOrigin = Vec3::Zero();
   Real m_parkingPitch = 0;
@@ -47,6 +62,7 @@ class BloodLoop {
   std::deque<Index> m_queue;   // parked particle ids, first in first out
   std::vector<Vec3> m_occupied;  // scratch: blood near the inlet
   std::vector<Index> m_parkedAt;  // scratch: particle index of each parked blood id - first id
+  std::vector<Index> m_underLid;  // scratch
 };
 
 }  // namespace hs::cardiac

@@ -96,6 +96,7 @@ BeatClockSettings clockSettings(const CycleSettings& cycle) {
   s.beats = cycle.beats;
   s.seed = cycle.seed;
   s.irregularity = cycle.pattern == BeatPattern::Irregular ? cycle.irregularity : Real(0);
+  s.irregularBothWays = cycle.irregularBothWays;
   return s;
 }
 
@@ -182,6 +183,10 @@ void CardiacCycle::apply(std::vector<Vec3>& positions, std::vector<Vec3>& predic
       if (elapsed <= m_relaxationSeconds + 0.5 * double(dt)) relaxPath(predicted, region, elapsed, m_relaxationSeconds);
     }
   }
+}
+
+void CardiacCycle::advanceClocks(Real dt) {
+  for (BeatingRegion& region : m_regions) region.clock.advance(dt);
 }
 
 Phase CardiacCycle::phase() const {

@@ -51,6 +51,9 @@ class CardiacCycle {
   // Moves the beating particles for this step (after prediction) and advances the clocks.
   void apply(std::vector<Vec3>& positions, std::vector<Vec3>& predicted, const pbd::StepContext& context);
 
+  // The clocks alone, for a wall moved by something else (volume_driven_wall.h).
+  void advanceClocks(Real dt);
+
   [[nodiscard]] Phase phase() const;  // of the first (main) region
   [[nodiscard]] int beatsCompleted() const;  // systoles completed by the main region
   [[nodiscard]] const std::vector<BeatingRegion>& regions() const { return m_regions; }

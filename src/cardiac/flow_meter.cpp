@@ -1,5 +1,6 @@
 #include "cardiac/flow_meter.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 
@@ -63,6 +64,7 @@ void FlowMeter::measure(const pbd::Particles& particles, Index first, const std:
     const int a = crossing(m_path.aortic, x0, x1);
     s.mitralForward += m > 0, s.mitralBackward += m < 0;
     s.aorticForward += a > 0, s.aorticBackward += a < 0;
+    if (a > 0) s.aorticJet = std::max(s.aorticJet, double(particles.velocity[i].norm()));
     const Real p = i < pressures.size() ? pressures[i] : Real(0);
     const FlowRegion r = m_path.classify(x1, m_radius, m_spacing);
     ++s.count[std::size_t(r)];

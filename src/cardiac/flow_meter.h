@@ -23,6 +23,7 @@ struct FlowStep {
   std::array<double, kFlowRegionCount> pressure{};     // Pa, mean per region (0 if empty)
   // Particles that crossed each orifice in the step, forward and backward.
   std::size_t mitralForward = 0, mitralBackward = 0, aorticForward = 0, aorticBackward = 0;
+  double aorticJet = 0;       // m/s, fastest particle that crossed the aortic disc forward
   std::size_t returned = 0;   // particles that left through a vessel end this step
   std::size_t reentered = 0;  // parked particles that re-entered the inflow vessel
   ValveStates valves;         // during the step

@@ -1,10 +1,13 @@
 #include "cardiac/heart_simulation.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
+#include "cardiac/heart_activation.h"
 #include "pbd/soft_body.h"
 
 namespace hs::cardiac {
@@ -48,13 +51,50 @@ void HeartSimulation::buildHeart() {
                                          softBodySettings(m_scenario.tissue));
   for (Index v : model.pinned) m_particles.inverseMass[m_firstWallParticle + v] = 0;
   pbd::finalizeConstraints(m_constraints, m_particles.position);
-  m_cycle.emplace(m_scenario.cycle, model, m_firstWallParticle);
+  if (m_scenario.circulation.lumped) {
+    buildLumpedCirculation();
+  } else {
+    m_cycle.emplace(m_scenario.cycle, model, m_firstWallParticle);
+  }
   assert(m_firstWallParticle == 0 && "cavityVolume reads particle positions as model vertices");
   m_restVolume.reserve(model.mesh.tets.size());
   for (const pbd::Tet& t : model.mesh.tets) {
     const auto& x = model.mesh.vertices;
     m_restVolume.push_back(pbd::signedTetVolume(x[t[0]], x[t[1]], x[t[2]], x[t[3]]));
   }
+}
+
+// The lumped circulation times the beat (the activation's length from the heart rate, irregular
+// beats both ways), drives the wall through the cavity volume and starts from the wall's rest volume.
+void HeartSimulation::buildLumpedCirculation() {
+  const LvModel& model = *m_model;
+  const CirculationSettings& c = m_scenario.circulation;
+  if (m_scenario.cycle.mode != TimingMode::Physiological || !m_scenario.cycle.enabled)
+    throw std::invalid_argument("circulation.lumped: the lumped circulation needs a beating heart with "
+                                "cycle.mode = \"physiological\"");
+  CycleSettings cycle = m_scenario.cycle;
+  m_beatTiming = beatTimingForRate(double(cycle.heartRateBpm));
+  // The clock's systole is the ventricle's activation, contraction and relaxation.
+  const double activation = m_beatTiming.contraction + m_beatTiming.relaxation;
+  cycle.systolicFraction = Real(std::min(0.9, activation * double(cycle.heartRateBpm) / 60.0));
+  cycle.irregularBothWays = true;
+  m_cycle.emplace(cycle, model, m_firstWallParticle);
+  m_regionShares = regionShares(*m_cycle, model, m_firstWallParticle);
+  m_drivenWall.emplace(model, selectBeatingVertices(cycle, model), m_firstWallParticle, c.wallMotion);
+
+  LumpedParameters p = c.lumpedParameters;
+  const double pi = 3.14159265358979323846;
+  p.pulmonaryVenousPressure = double(c.atrialPressureMmHg) * kPascalPerMmHg;
+  p.mitralArea = pi * double(model.params.mitralRadius) * double(model.params.mitralRadius);
+  p.aorticRootArea = pi * double(model.params.aorticRadius) * double(model.params.aorticRadius);
+  p.aorticArea = c.aorticValveArea > 0 ? double(c.aorticValveArea) : p.aorticRootArea;
+  if (p.aorticArea > p.aorticRootArea * (1 + 1e-9))
+    throw std::invalid_argument("circulation.aortic_valve_area_cm2: got " + std::to_string(p.aorticArea * 1e4) +
+                                ", expected no more than the aortic vessel's lumen, " +
+                                std::to_string(p.aorticRootArea * 1e4) + " cm^2 (model.aortic_radius)");
+  if (m_scenario.blood.enabled) p.bloodDensity = double(m_scenario.blood.restDensity);
+  m_lumped.emplace(p);
+  m_lumped->startFrom(double(cardiac::cavityVolume(model, model.mesh.vertices)));
 }
 
 // Blood beyond this box is lost: the container, or the heart's rest bounding box grown by a
@@ -93,6 +133,8 @@ void HeartSimulation::buildBlood() {
     for (std::size_t v = 0; v < wetted.size(); v += 2) wetted[v] = 1;
     m_wallContact->setWettedVertices(wetted);
     m_circulation.emplace(*m_model, m_scenario);
+    m_vesselCapacity = vesselCapacity(m_scenario, *m_model);
+    if (m_lumped) m_circulation->valves.closeOutlet(m_circulation->loop.outletLid());
   }
   m_fluid = std::make_unique<pbd::FluidSolver>(bloodSolverSettings(m_scenario));
   const Real inverseMass = Real(1) / m_fluid->settings().fluid.particleMass;
@@ -147,9 +189,27 @@ void HeartSimulation::step() {
 void HeartSimulation::beginStep(const pbd::StepContext& context) {
   if (m_fluid && context.stepIndex > 0 && context.stepIndex % kReorderInterval == 0) reorderBlood();
   if (m_cycle) m_lastPhase = m_cycle->phase();
+  if (m_lumped) advanceLumpedCirculation(context);
   if (!m_circulation) return;
-  m_circulation->valves.decide(m_lastPhase, m_circulation->meter.lastStep().valvePressures);
+  if (m_lumped) {
+    const CirculationSample& lumped = m_lumped->last();
+    m_circulation->valves.follow({lumped.mitralOpen, lumped.aorticOpen});
+    m_circulation->loop.allowOutflow(lumped.aorticFlow * double(context.dt), double(m_circulation->meter.particleVolume()));
+    // The atrium drives the inflow vessel by its pressure over the ventricle's while the mitral
+    // valve is open; against the shut valve it would only squeeze the column.
+    m_circulation->filling.setPressure(lumped.mitralOpen ? std::max(0.0, lumped.laPressure - lumped.lvPressure) : 0.0);
+  } else {
+    m_circulation->valves.decide(m_lastPhase, m_circulation->meter.lastStep().valvePressures);
+  }
   m_circulation->meter.begin(m_particles, m_firstBloodParticle);
+}
+
+// The lumped heart over this step, with the activation the clocks give before they advance.
+void HeartSimulation::advanceLumpedCirculation(const pbd::StepContext& context) {
+  const Activation activation =
+      heartActivation(*m_cycle, m_regionShares, m_beatTiming, m_scenario.circulation.atrialContraction, context.dt);
+  const double end = double(context.stepIndex + 1) * double(context.dt);
+  m_lumped->advance(end, double(context.dt), activation);
 }
 
 // The filling pressure before gravity (the order of the two sums is part of the state).
@@ -159,7 +219,13 @@ void HeartSimulation::applyExternalForces(const pbd::StepContext& context) {
 }
 
 void HeartSimulation::moveWall(const pbd::StepContext& context) {
-  if (m_cycle) m_cycle->apply(m_particles.position, m_particles.predicted, context);
+  if (!m_cycle) return;
+  if (!m_drivenWall) {
+    m_cycle->apply(m_particles.position, m_particles.predicted, context);
+    return;
+  }
+  m_cycle->advanceClocks(context.dt);
+  m_drivenWall->drive(m_particles.position, m_particles.predicted, m_lumped->last().lvVolume);
 }
 
 // PBF's density iterations. The wall takes part in every one (closed valves first, the wall
@@ -199,6 +265,16 @@ void HeartSimulation::endStep(const pbd::StepContext&) {
   const BloodLoop::Turnover turnover =
       c.settings.loop ? c.loop.circulate(m_particles, m_firstBloodParticle) : BloodLoop::Turnover{};
   c.meter.recordLoop(turnover.returned, turnover.reentered, c.loop.waiting());
+}
+
+double HeartSimulation::vesselFill() const {
+  if (!m_circulation) return 1;
+  const FlowStep& last = m_circulation->meter.lastStep();
+  auto share = [](std::size_t count, std::size_t capacity) {
+    return capacity > 0 ? std::min(1.0, double(count) / double(capacity)) : 1.0;
+  };
+  return std::min(share(last.count[std::size_t(FlowRegion::InflowVessel)], m_vesselCapacity.inflow),
+                  share(last.count[std::size_t(FlowRegion::OutflowVessel)], m_vesselCapacity.outflow));
 }
 
 const std::vector<Real>& HeartSimulation::pressures() const {

@@ -14,6 +14,8 @@
 #include "cardiac/blood.h"
 #include "cardiac/cardiac_cycle.h"
 #include "cardiac/circulation.h"
+#include "cardiac/lumped_circulation.h"
+#include "cardiac/volume_driven_wall.h"
 #include "cardiac/lv_model.h"
 #include "cardiac/scenario.h"
 #include "pbd/fluid_solver.h"
@@ -59,6 +61,13 @@ class HeartSimulation {
 
   // Heart and blood: the flow path's pieces (valves, flow meter, loop); null otherwise.
   [[nodiscard]] const Circulation* circulation() const { return m_circulation ? &*m_circulation : nullptr; }
+  // circulation.lumped: the lumped circulation driving the wall, and the wall it drives; null
+  // otherwise.
+  [[nodiscard]] const LumpedCirculation* lumped() const { return m_lumped ? &*m_lumped : nullptr; }
+  [[nodiscard]] const VolumeDrivenWall* drivenWall() const { return m_drivenWall ? &*m_drivenWall : nullptr; }
+  // Heart and blood: the smallest share of the two vessels' lumens holding blood after the last
+  // step (particles in each against vesselCapacity(), at most 1).
+  [[nodiscard]] double vesselFill() const;
   // Pressure (Pa) of each particle from the last density solve (0 for the wall), see
   // pbd::FluidSolver::pressures(); empty without blood.
   [[nodiscard]] const std::vector<Real>& pressures() const;
@@ -81,11 +90,13 @@ class HeartSimulation {
  private:
   // Construction.
   void buildHeart();
+  void buildLumpedCirculation();
   void buildBlood();
   void findDomain();
   void recordBloodOrigins();
   // The stages of step(), in order.
   void beginStep(const pbd::StepContext& context);
+  void advanceLumpedCirculation(const pbd::StepContext& context);
   void applyExternalForces(const pbd::StepContext& context);
   void moveWall(const pbd::StepContext& context);
   void solveBloodDensity(const pbd::StepContext& context);
@@ -107,6 +118,11 @@ class HeartSimulation {
   std::unique_ptr<pbd::FluidSolver> m_fluid;
   std::unique_ptr<pbd::ParticleTetCollider> m_wallContact;  // heart and blood
   std::optional<Circulation> m_circulation;                 // heart and blood
+  std::optional<LumpedCirculation> m_lumped;                // circulation.lumped
+  std::optional<VolumeDrivenWall> m_drivenWall;             // circulation.lumped
+  std::vector<double> m_regionShares;                       // circulation.lumped: per beating region
+  BeatTiming m_beatTiming;                                  // circulation.lumped
+  VesselCapacity m_vesselCapacity;                          // heart and blood
   Vec3 m_domainMin = Vec3::Zero(), m_domainMax = Vec3::Zero();  // outside: blood is lost
   std::vector<FlowRegion> m_bloodOrigin;  // per blood particle id - firstBloodParticle
   std::vector<Real> m_restVolume;  // per model tet

@@ -93,6 +93,8 @@ RunMonitor::RunMonitor(const HeartSimulation& sim, MonitorSettings settings)
   m_last.startTime = m_last.time = sim.time();
   m_last.phase = sim.lastPhase();
   if (sim.hasHeart() && settings.pump) m_last.cavity = double(sim.cavityVolume());
+  if (sim.lumped() && settings.pump)
+    m_circulation.emplace(double(sim.scenario().simulation.dt), settings.lumpedSamples);
 }
 
 bool RunMonitor::check(const TissueStats& tissue, double cavity) {
@@ -128,6 +130,7 @@ const Verdict& RunMonitor::observe() {
   ++m_observed;
   m_extremes.add(sample, m_sim.hasHeart() && m_settings.pump);
   if (m_sim.hasHeart() && m_settings.beatList) m_beats.record(sample.startTime, sample.phase, sample.cavity, sample.flows);
+  if (m_circulation) recordCirculation(sample);
   if (sample.blood) m_verdict.issue = checkBlood(*sample.blood, m_settings.limits);
   m_last = std::move(sample);
   return m_verdict;
@@ -143,7 +146,27 @@ void RunMonitor::gather(StepSample& sample) const {
     sample.circulation = true;
     sample.flows = circulation->meter.lastStepFlows();
     sample.flowStep = circulation->meter.lastStep();
+    sample.vesselFill = m_sim.vesselFill();
   }
+  if (const LumpedCirculation* lumped = m_sim.lumped(); lumped && m_settings.pump) {
+    sample.lumped = lumped->last();
+    sample.contraction = m_sim.drivenWall()->contraction();
+    sample.baseDescent = m_sim.drivenWall()->baseDescent(sample.contraction);
+  }
+}
+
+void RunMonitor::recordCirculation(const StepSample& sample) {
+  CoupledStep step;
+  step.startTime = sample.startTime;
+  step.time = sample.time;
+  step.phase = sample.phase;
+  step.cavity = sample.cavity;
+  step.lumped = *sample.lumped;
+  step.aorticForward = sample.flows.aorticForward;
+  step.aorticBackward = sample.flows.aorticBackward;
+  step.aorticJet = sample.flowStep.aorticJet;
+  step.vesselFill = sample.vesselFill;
+  m_circulation->record(step);
 }
 
 RunSummary RunMonitor::summary() const {
@@ -154,6 +177,7 @@ RunSummary RunMonitor::summary() const {
   r.heart = m_sim.hasHeart();
   r.blood = m_sim.hasBlood();
   r.beats = m_beats;
+  r.circulation = m_circulation;
   const RunExtremes& e = m_extremes;
   if (r.heart) {
     const LvModel& model = m_sim.model();

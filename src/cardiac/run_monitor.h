@@ -15,6 +15,7 @@
 #include "cardiac/beat_metrics.h"
 #include "cardiac/blood.h"
 #include "cardiac/circulation.h"
+#include "cardiac/circulation_recorder.h"
 #include "cardiac/heart_simulation.h"
 #include "cardiac/lv_model.h"
 
@@ -68,6 +69,10 @@ struct StepSample {
   ValveFlows flows;   // m^3 through each orifice in the step
   FlowStep flowStep;  // valves, particles per region, mean pressures
   bool circulation = false;
+  // circulation.lumped: the lumped circulation's step, the wall's contraction a and base
+  // descent (m), the vessels' fill.
+  std::optional<CirculationSample> lumped;
+  double contraction = 0, baseDescent = 0, vesselFill = 1;
   [[nodiscard]] double pressure(FlowRegion region) const { return flowStep.pressure[std::size_t(region)]; }
 };
 
@@ -102,6 +107,7 @@ struct RunSummary {
   Real restCavity = 0;
   double cavityMin = 0, cavityMax = 0;
   BeatTracker beats{0};
+  std::optional<CirculationRecorder> circulation;  // circulation.lumped
   // Blood: at the end, and the most over the run (lost, inside the wall, speed) or over its
   // last second (density error).
   BloodStats bloodFinal;
@@ -114,9 +120,11 @@ struct MonitorSettings {
   bool beatList = true;      // every beat of the run in beats() (the viewer keeps its own, bounded)
   bool everyColumn = false;  // also rest deviation and blood statistics each step (metrics.csv)
   double endTime = 0;        // s, the run's planned end (its last second averages the density)
+  // circulation.lumped: the most recent lumped samples kept (the viewer bounds them).
+  std::size_t lumpedSamples = std::numeric_limits<std::size_t>::max();
   HealthLimits limits;
   // Checks only: for front ends that read no figures (render, bench, validate).
-  static MonitorSettings healthOnly() { return {false, false, false, 0, {}}; }
+  static MonitorSettings healthOnly() { return {false, false, false, 0, {}, {}}; }
 };
 
 class RunMonitor {
@@ -129,12 +137,17 @@ class RunMonitor {
   // The checks alone, on the state as it is (between steps or after a timed stretch).
   const Verdict& checkNow();
   // Closes the beat in progress at the end of the run.
-  void finish() { m_beats.finish(); }
+  void finish() {
+    m_beats.finish();
+    if (m_circulation) m_circulation->finish();
+  }
 
   [[nodiscard]] const Verdict& verdict() const { return m_verdict; }
   // The last observed step (step 0: the state the monitor started from).
   [[nodiscard]] const StepSample& last() const { return m_last; }
   [[nodiscard]] const BeatTracker& beats() const { return m_beats; }
+  // circulation.lumped with figures gathered (MonitorSettings::pump); null otherwise.
+  [[nodiscard]] const CirculationRecorder* circulation() const { return m_circulation ? &*m_circulation : nullptr; }
   [[nodiscard]] const RunExtremes& extremes() const { return m_extremes; }
   [[nodiscard]] std::int64_t observedSteps() const { return m_observed; }
   [[nodiscard]] RunSummary summary() const;
@@ -145,11 +158,13 @@ class RunMonitor {
   Verdict m_verdict;
   StepSample m_last;
   BeatTracker m_beats;
+  std::optional<CirculationRecorder> m_circulation;
   RunExtremes m_extremes;
   std::int64_t m_observed = 0;
   bool check(const TissueStats& tissue, double cavity);
   [[nodiscard]] bool bloodLimited() const;
   void gather(StepSample& sample) const;
+  void recordCirculation(const StepSample& sample);
 };
 
 }  // namespace hs::cardiac

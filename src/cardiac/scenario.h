@@ -4,7 +4,10 @@
 #include <string>
 #include <vector>
 
+#include "cardiac/clinical_units.h"
+#include "cardiac/lumped_circulation.h"
 #include "cardiac/lv_model.h"
+#include "cardiac/volume_driven_wall.h"
 
 namespace hs::cardiac {
 
@@ -62,6 +65,7 @@ struct CycleSettings {
   Real sphereRadius = 0;             // m
   // Irregular pattern: each diastole is shortened by a random share in [0, irregularity).
   Real irregularity = Real(0.6);
+  bool irregularBothWays = false;  // set with the lumped circulation (beat_clock.h), not a key
   unsigned seed = 1;
   // Inconsistent pattern: these segments beat with their own rate and phase.
   std::vector<int> inconsistentSegments = {7, 13, 17};
@@ -98,7 +102,9 @@ struct BloodSettings {
   Real vorticity = 0;               // m/s, PBF eq. 16 epsilon; 0 = off
   // Where the particles start: a lattice block (blockMin..blockMax), or the heart's chamber
   // (the LV cavity, at least one spacing from its wall).
-  enum class Start { Block, Chamber, Vessel } start = Start::Block;
+  // "heart": the cavity and both vessels full (a particle radius from their walls), for the
+  // lumped circulation, which needs the heart full from the first step.
+  enum class Start { Block, Chamber, Vessel, Heart } start = Start::Block;
   Vec3 blockMin = Vec3(Real(-0.8), Real(-2.4), Real(-0.8));  // m, the block the particles start in
   Vec3 blockMax = Vec3(Real(0.8), Real(-0.8), Real(0.8));
 };
@@ -112,8 +118,6 @@ struct ContainerSettings {
   bool mesh = false;
 };
 
-// Pascal per millimetre of mercury: the scenario's pressures are in mmHg, the solver's in Pa.
-inline constexpr double kPascalPerMmHg = 133.322;
 
 // The blood's path through the heart (circulation.h): valves, filling pressure, closed loop.
 enum class ValveMode { Timing, Pressure, Open };
@@ -123,6 +127,16 @@ struct CirculationSettings {
   Real atrialPressureMmHg = 0;    // filling pressure driving the inflow vessel (mmHg)
   bool twoWay = false;            // blood pushes the wall back (two-way coupling)
   bool wallSlip = false;          // blood slides along the wall (push-out along the face normal)
+  // The lumped circulation (lumped_circulation.h) drives the wall: the cavity follows its
+  // ventricle's volume, the valves its valves, and it gives the pressures. Physiological
+  // cycles only. The atrial pressure above is its preload (the pulmonary veins' pressure);
+  // the orifice areas come from the model (mitral and aortic radius) unless the aortic valve's
+  // own area is set (stenosis).
+  bool lumped = false;
+  LumpedParameters lumpedParameters;
+  Real aorticValveArea = 0;       // m^2, 0 = the aortic vessel's lumen
+  bool atrialContraction = true;  // false: no A wave (atrial fibrillation)
+  WallMotionSettings wallMotion;
 };
 
 struct OutputSettings {

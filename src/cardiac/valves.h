@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 // The mitral and aortic valves as gates. Each orifice disc (flow_path.h) is a gate. A closed
 // valve is a wall of zero thickness across the disc: a particle keeps its radius from it on
 // the side it started the step on. An open valve lets particles through both ways, so a valve
@@ -45,6 +46,11 @@ class Valves {
   // Start of a step: the valves for this step, from the wall's phase and the last step's
   // pressures.
   void decide(Phase phase, const ValvePressures& lastStep);
+  // The lumped circulation's valves (lumped_circulation.h) instead: open while blood flows forward.
+  void follow(const ValveStates& states) { m_states = states; }
+  // A lid over the outflow vessel's far end, always closed (blood_loop.h takes blood out
+  // below it as the lumped aortic flow says).
+  void closeOutlet(const Orifice& lid) { m_outletLid = lid; }
   [[nodiscard]] const ValveStates& states() const { return m_states; }
 
   // Closed valves as walls: for the fluid solver's working positions (points[k] is particle
@@ -57,6 +63,7 @@ class Valves {
   void gate(const Vec3& x, Vec3& p) const;
 
   Orifice m_mitral, m_aortic;
+  std::optional<Orifice> m_outletLid;
   ValveMode m_mode;
   bool m_cycleEnabled;
   Real m_radius;

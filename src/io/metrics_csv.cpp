@@ -22,6 +22,16 @@ void writeFlowRow(std::ostream& csv, const cardiac::StepSample& sample) {
       << sample.pressure(FlowRegion::OutflowVessel);
 }
 
+void writeLumpedRow(std::ostream& csv, const cardiac::StepSample& sample) {
+  const cardiac::CirculationSample l = sample.lumped.value_or(cardiac::CirculationSample{});
+  constexpr double mmHg = cardiac::kPascalPerMmHg;
+  csv << ',' << l.lvPressure / mmHg << ',' << l.aorticPressure / mmHg << ',' << l.laPressure / mmHg << ','
+      << l.lvVolume * kMlPerM3 << ',' << l.mitralFlow * kMlPerM3 << ',' << l.aorticFlow * kMlPerM3 << ','
+      << int(l.mitralOpen) << ',' << int(l.aorticOpen) << ',' << l.ventricularActivation << ','
+      << l.atrialActivation << ',' << sample.contraction << ',' << sample.baseDescent * 1e3 << ','
+      << sample.vesselFill;
+}
+
 }  // namespace
 
 void writeMetricsHeader(std::ostream& csv, const MetricsColumns& columns) {
@@ -34,6 +44,10 @@ void writeMetricsHeader(std::ostream& csv, const MetricsColumns& columns) {
     csv << ",mitral_open,aortic_open,particles_inflow_vessel,particles_lv,particles_outflow_vessel,"
            "particles_returning,particles_outside,mitral_forward_ml,mitral_backward_ml,aortic_forward_ml,"
            "aortic_backward_ml,pressure_inflow_vessel_pa,pressure_lv_pa,pressure_outflow_vessel_pa";
+  if (columns.lumped)
+    csv << ",lv_pressure_mmhg,aortic_pressure_mmhg,la_pressure_mmhg,lumped_lv_volume_ml,lumped_mitral_flow_ml_s,"
+           "lumped_aortic_flow_ml_s,lumped_mitral_open,lumped_aortic_open,activation_ventricle,activation_atrium,"
+           "wall_contraction,base_descent_mm,vessel_fill";
   csv << '\n';
 }
 
@@ -50,6 +64,7 @@ void writeMetricsRow(std::ostream& csv, const MetricsColumns& columns, const car
         << blood.maxSpeed << ',' << blood.insideWall;
   }
   if (columns.flows) writeFlowRow(csv, sample);
+  if (columns.lumped) writeLumpedRow(csv, sample);
   csv << '\n';
 }
 

@@ -2,7 +2,9 @@
 // metrics.csv of `heartsim run`: one row per step. Columns: step, time and phase; with a heart
 // the cavity volume, the wall's volume errors, inverted tets and rest deviation; with blood its
 // loss, density error, speed and wall penetration; with both, the flow path (valves, particles
-// per region, volume through each orifice in mL, mean pressure per region).
+// per region, volume through each orifice in mL, mean pressure per region); with the lumped
+// circulation its pressures (mmHg), volume, flows (mL/s), valves and activations, the wall's
+// contraction and base descent, and the vessels' fill.
 #include <filesystem>
 #include <fstream>
 #include <ostream>
@@ -12,7 +14,7 @@
 namespace hs::io {
 
 struct MetricsColumns {
-  bool heart = false, blood = false, flows = false;
+  bool heart = false, blood = false, flows = false, lumped = false;
 };
 
 void writeMetricsHeader(std::ostream& csv, const MetricsColumns& columns);

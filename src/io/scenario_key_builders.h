@@ -117,6 +117,19 @@ KeySpec realKey(std::string name, F field, Range range, std::string unit, std::s
   return k;
 }
 
+// A number given in clinical units (the key's `unit`) and kept in SI: field = value * toSi.
+template <class F>
+KeySpec clinicalKey(std::string name, F field, double toSi, Range range, std::string unit, std::string doc) {
+  KeySpec k = makeSpec(std::move(name), "number", std::move(unit), range.text(), std::move(doc));
+  k.expect = withUnit("a finite number" + spaced(k.range), k.unit);
+  k.set = [field, toSi, range, expect = k.expect](Scenario& s, const toml::node& n) {
+    using T = std::remove_reference_t<decltype(field(s))>;
+    field(s) = static_cast<T>(double(readReal(n, range, expect)) * toSi);
+  };
+  k.get = [field, toSi](const Scenario& s) { return formatReal(static_cast<Real>(double(fieldOf(field, s)) / toSi)); };
+  return k;
+}
+
 template <class F>
 KeySpec intKey(std::string name, F field, std::int64_t lo, std::string unit, std::string doc,
                std::int64_t hi = std::numeric_limits<std::int64_t>::max()) {

@@ -174,7 +174,8 @@ std::vector<KeySpec> bloodKeys() {
   const std::vector<std::pair<std::string, cardiac::BloodSettings::Start>> starts = {
       {"block", cardiac::BloodSettings::Start::Block},
       {"chamber", cardiac::BloodSettings::Start::Chamber},
-      {"vessel", cardiac::BloodSettings::Start::Vessel}};
+      {"vessel", cardiac::BloodSettings::Start::Vessel},
+      {"heart", cardiac::BloodSettings::Start::Heart}};
   return {
       boolKey("blood.enabled", HS_FIELD(blood.enabled), "Whether blood particles are simulated."),
       intKey("blood.particles", HS_FIELD(blood.particles), 0, "",
@@ -249,6 +250,54 @@ std::vector<KeySpec> circulationKeys() {
   };
 }
 
+// [circulation], the lumped circulation (cardiac/lumped_circulation.h, docs/physiology.md):
+// clinical units in the file, SI inside.
+std::vector<KeySpec> lumpedCirculationKeys() {
+  using namespace cardiac;
+  const double mmHg = kPascalPerMmHg, mL = kCubicMetresPerMl;
+  const double elastance = elastanceFromClinical(1), resistance = resistanceFromClinical(1);
+  const double compliance = complianceFromClinical(1), cm2 = 1e-4;
+  return {
+      boolKey("circulation.lumped", HS_FIELD(circulation.lumped),
+              "A lumped circulation (elastance ventricle and atrium, three-element Windkessel) gives the "
+              "pressures and drives the wall: the cavity follows its volume, the valves its valves. "
+              "Needs cycle.mode = \"physiological\"."),
+      clinicalKey("circulation.contractility_mmhg_per_ml", HS_FIELD(circulation.lumpedParameters.contractility),
+                  elastance, gtLe(0, 20), "mmHg/mL",
+                  "End-systolic elastance Ees of the whole ventricle (scaled by the share of the wall that beats)."),
+      clinicalKey("circulation.lv_v0_ml", HS_FIELD(circulation.lumpedParameters.unstressedVolume), mL,
+                  between(0, 200), "mL", "Unstressed volume V0 of the pressure-volume relations."),
+      clinicalKey("circulation.lv_stiffness_mmhg", HS_FIELD(circulation.lumpedParameters.diastolicScale), mmHg,
+                  gtLe(0, 20), "mmHg", "A of the end-diastolic relation P = A (exp(B (V - V0)) - 1)."),
+      clinicalKey("circulation.lv_stiffness_per_ml", HS_FIELD(circulation.lumpedParameters.diastolicExponent),
+                  1 / mL, gtLe(0, 0.5), "1/mL", "B of the end-diastolic relation: the ventricle's stiffness."),
+      clinicalKey("circulation.peripheral_resistance_mmhg_s_per_ml",
+                  HS_FIELD(circulation.lumpedParameters.peripheralResistance), resistance, gtLe(0, 20),
+                  "mmHg s/mL", "Afterload: systemic peripheral resistance of the Windkessel."),
+      clinicalKey("circulation.arterial_compliance_ml_per_mmhg",
+                  HS_FIELD(circulation.lumpedParameters.arterialCompliance), compliance, gtLe(0, 20), "mL/mmHg",
+                  "Afterload: compliance of the systemic arteries."),
+      clinicalKey("circulation.characteristic_impedance_mmhg_s_per_ml",
+                  HS_FIELD(circulation.lumpedParameters.characteristicImpedance), resistance, between(0, 1),
+                  "mmHg s/mL", "Characteristic impedance of the proximal aorta."),
+      clinicalKey("circulation.venous_pressure_mmhg",
+                  HS_FIELD(circulation.lumpedParameters.systemicVenousPressure), mmHg, between(0, 30), "mmHg",
+                  "Systemic venous pressure the Windkessel drains into."),
+      clinicalKey("circulation.aortic_valve_area_cm2", HS_FIELD(circulation.aorticValveArea), cm2, between(0, 20),
+                  "cm^2", "Aortic valve orifice; smaller than the vessel's lumen is a stenosis (0: the lumen)."),
+      clinicalKey("circulation.mitral_regurgitant_area_cm2",
+                  HS_FIELD(circulation.lumpedParameters.mitralRegurgitantArea), cm2, between(0, 10), "cm^2",
+                  "Orifice through which blood leaks back into the atrium in systole (0: a competent valve)."),
+      boolKey("circulation.atrial_contraction", HS_FIELD(circulation.atrialContraction),
+              "The atrium contracts before each beat (the A wave); false: atrial fibrillation."),
+      realKey("circulation.base_descent", HS_FIELD(circulation.wallMotion.longitudinal), between(0, 0.4), "",
+              "Wall motion: the base's descent toward the apex at full contraction, share of the long axis."),
+      realKey("circulation.radial_shortening", HS_FIELD(circulation.wallMotion.radial), between(0, 0.6), "",
+              "Wall motion: a beating point's travel toward the long axis at full contraction, share of its "
+              "distance from it."),
+  };
+}
+
 // [output]
 std::vector<KeySpec> outputKeys() {
   return {
@@ -263,7 +312,7 @@ std::vector<KeySpec> buildKeyTable() {
   std::vector<KeySpec> table;
   for (const SectionKeys section :
        {&scenarioKeys, &simulationKeys, &modelKeys, &tissueKeys, &cycleKeys, &cycleSphereKeys,
-        &cycleInconsistentKeys, &bloodKeys, &containerKeys, &circulationKeys, &outputKeys}) {
+        &cycleInconsistentKeys, &bloodKeys, &containerKeys, &circulationKeys, &lumpedCirculationKeys, &outputKeys}) {
     std::vector<KeySpec> rows = section();
     std::move(rows.begin(), rows.end(), std::back_inserter(table));
   }

@@ -3,6 +3,8 @@
 // the line and the key.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -152,6 +154,9 @@ struct KeyCase {
   std::function<bool(const Scenario&)> check;
 };
 
+// A value read in clinical units and kept in SI, to the float precision of the file reader.
+bool near(double actual, double expected) { return std::abs(actual - expected) <= 1e-6 * std::abs(expected); }
+
 std::vector<KeyCase> everyKeyCase() {
   return {
       {"scenario.name", "lesson one", [](const Scenario& s) { return s.name == "lesson one"; }},
@@ -263,6 +268,33 @@ std::vector<KeyCase> everyKeyCase() {
        [](const Scenario& s) { return s.circulation.atrialPressureMmHg == Real(8); }},
       {"circulation.two_way", "true", [](const Scenario& s) { return s.circulation.twoWay; }},
       {"circulation.wall_slip", "true", [](const Scenario& s) { return s.circulation.wallSlip; }},
+      {"circulation.lumped", "true", [](const Scenario& s) { return s.circulation.lumped; }},
+      // Clinical units in the file, SI inside.
+      {"circulation.contractility_mmhg_per_ml", "1.5",
+       [](const Scenario& s) { return near(s.circulation.lumpedParameters.contractility, 1.5 * 133.322e6); }},
+      {"circulation.lv_v0_ml", "20",
+       [](const Scenario& s) { return near(s.circulation.lumpedParameters.unstressedVolume, 20e-6); }},
+      {"circulation.lv_stiffness_mmhg", "0.7",
+       [](const Scenario& s) { return near(s.circulation.lumpedParameters.diastolicScale, 0.7 * 133.322); }},
+      {"circulation.lv_stiffness_per_ml", "0.05",
+       [](const Scenario& s) { return near(s.circulation.lumpedParameters.diastolicExponent, 0.05e6); }},
+      {"circulation.peripheral_resistance_mmhg_s_per_ml", "2",
+       [](const Scenario& s) { return near(s.circulation.lumpedParameters.peripheralResistance, 2 * 133.322e6); }},
+      {"circulation.arterial_compliance_ml_per_mmhg", "0.8",
+       [](const Scenario& s) { return near(s.circulation.lumpedParameters.arterialCompliance, 0.8e-6 / 133.322); }},
+      {"circulation.characteristic_impedance_mmhg_s_per_ml", "0.1",
+       [](const Scenario& s) { return near(s.circulation.lumpedParameters.characteristicImpedance, 0.1 * 133.322e6); }},
+      {"circulation.venous_pressure_mmhg", "3",
+       [](const Scenario& s) { return near(s.circulation.lumpedParameters.systemicVenousPressure, 3 * 133.322); }},
+      {"circulation.aortic_valve_area_cm2", "0.7",
+       [](const Scenario& s) { return near(s.circulation.aorticValveArea, 0.7e-4); }},
+      {"circulation.mitral_regurgitant_area_cm2", "0.3",
+       [](const Scenario& s) { return near(s.circulation.lumpedParameters.mitralRegurgitantArea, 0.3e-4); }},
+      {"circulation.atrial_contraction", "false", [](const Scenario& s) { return !s.circulation.atrialContraction; }},
+      {"circulation.base_descent", "0.1",
+       [](const Scenario& s) { return s.circulation.wallMotion.longitudinal == Real(0.1); }},
+      {"circulation.radial_shortening", "0.2",
+       [](const Scenario& s) { return s.circulation.wallMotion.radial == Real(0.2); }},
       {"output.vtk", "true", [](const Scenario& s) { return s.output.vtk; }},
       {"output.vtk_every", "3", [](const Scenario& s) { return s.output.vtkEvery == 3; }},
   };

@@ -1,0 +1,47 @@
+#include "cardiac/heart_activation.h"
+
+#include <algorithm>
+
+namespace hs::cardiac {
+
+std::vector<double> regionShares(const CardiacCycle& cycle, const LvModel& model, Index firstParticle) {
+  std::size_t myocardium = 0;
+  for (std::size_t v = 0; v < model.region.size(); v += 2) myocardium += model.region[v] == Region::Myocardium;
+  std::vector<double> shares;
+  for (const BeatingRegion& region : cycle.regions()) {
+    std::size_t count = 0;
+    for (Index particle : region.particles) {
+      const Index v = particle - firstParticle;
+      count += v % 2 == 0 && model.region[v] == Region::Myocardium;
+    }
+    shares.push_back(myocardium > 0 ? double(count) / double(myocardium) : 0);
+  }
+  return shares;
+}
+
+Activation heartActivation(const CardiacCycle& cycle, const std::vector<double>& shares, const BeatTiming& timing,
+                           bool atrialContraction, Real dt) {
+  Activation a;
+  const double half = 0.5 * double(dt);
+  const auto& regions = cycle.regions();
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    const BeatClock& clock = regions[r].clock;
+    if (clock.phase() != Phase::Systole) continue;
+    const double sinceOnset = double(clock.stepsInPhase()) * double(dt) + half;
+    a.ventricle += shares[r] * ventricularActivationCurve(sinceOnset, timing.contraction, timing.relaxation);
+  }
+  if (!atrialContraction || regions.empty()) return a;
+  // The atrium's onset: a PR interval before the main region's next (or this) systole.
+  const BeatClock& main = regions.front().clock;
+  double sinceAtrialOnset = -1;
+  if (main.phase() == Phase::Systole) {
+    sinceAtrialOnset = timing.prInterval + double(main.stepsInPhase()) * double(dt) + half;
+  } else if (main.phase() == Phase::Diastole) {
+    const double untilSystole = double(main.diastoleLength(dt) - main.stepsInPhase()) * double(dt) - half;
+    sinceAtrialOnset = timing.prInterval - untilSystole;
+  }
+  a.atrium = activationCurve(sinceAtrialOnset, timing.atrialContraction, timing.atrialRelaxation);
+  return a;
+}
+
+}  // namespace hs::cardiac
