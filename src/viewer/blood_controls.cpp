@@ -21,11 +21,13 @@ struct Choice {
   const char* name;
 };
 
-// Every start has a name; the first two are offered (a block needs corners the panel has no
+// Every start has a name; the first three are offered (a block needs corners the panel has no
 // controls for, but a scenario may start there).
-constexpr std::array<Choice<Start>, 3> kStarts = {
-    {{Start::Vessel, "inflow vessel"}, {Start::Chamber, "chamber"}, {Start::Block, "block"}}};
-constexpr std::size_t kOfferedStarts = 2;
+constexpr std::array<Choice<Start>, 4> kStarts = {{{Start::Vessel, "inflow vessel"},
+                                                   {Start::Chamber, "chamber"},
+                                                   {Start::Heart, "heart and vessels"},
+                                                   {Start::Block, "block"}}};
+constexpr std::size_t kOfferedStarts = 3;
 constexpr std::array<Choice<ValveMode>, 3> kValveModes = {
     {{ValveMode::Timing, "timing"}, {ValveMode::Pressure, "pressure"}, {ValveMode::Open, "open"}}};
 
@@ -90,7 +92,8 @@ void drawBloodSection(BloodControls& c, bool hasHeart) {
   choiceCombo("blood start", starts, starts.first(kOfferedStarts), c.start, c.changed);
   tooltip(
       "Where the blood is at t = 0: in the inflow vessel (it fills the ventricle through the mitral "
-      "valve) or already in the chamber. Restarts from t = 0.");
+      "valve), already in the chamber, or filling the heart and both vessels (what the lumped "
+      "circulation needs: it moves the wall from the first step). Restarts from t = 0.");
   if (ImGui::Checkbox("two-way coupling", &c.twoWay)) c.changed = true;
   tooltip(
       "On: the blood pushes the heart wall back (the wall feels the blood's pressure).\nOff: the wall "

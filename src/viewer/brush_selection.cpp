@@ -114,4 +114,17 @@ std::vector<std::uint32_t> verticesInBrush(const BrushSurface& surface, const Br
   return picked;
 }
 
+std::vector<BrushQuery> brushDabsAlong(BrushQuery query, float x0, float y0, float x1, float y1) {
+  const float length = std::hypot(x1 - x0, y1 - y0);
+  const int steps = std::max(1, int(std::ceil(length / (0.5f * query.radius))));
+  std::vector<BrushQuery> dabs;
+  for (int i = 1; i <= steps; ++i) {
+    const float t = float(i) / float(steps);
+    query.centreX = x0 + t * (x1 - x0);
+    query.centreY = y0 + t * (y1 - y0);
+    dabs.push_back(query);
+  }
+  return dabs;
+}
+
 }  // namespace hs::viewer

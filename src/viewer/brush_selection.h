@@ -46,6 +46,11 @@ struct BrushSurface {
   const std::vector<std::array<std::uint32_t, 3>>* triangles = nullptr;
 };
 
+// The brush's dabs along a stroke from (x0, y0) to (x1, y1) (pixels, the cursor's path since the
+// last frame): `query` centred every half radius, ending at (x1, y1), so a fast stroke leaves
+// no gaps.
+std::vector<BrushQuery> brushDabsAlong(BrushQuery query, float x0, float y0, float x1, float y1);
+
 // The vertex ids under the brush, ascending. Cost: one projection per vertex, then one ray per
 // vertex under the brush against the triangles whose screen boxes meet the brush's box.
 std::vector<std::uint32_t> verticesInBrush(const BrushSurface& surface, const BrushQuery& query);

@@ -170,4 +170,14 @@ void drawRegionSection(RegionControls& c, const RegionStatus& s) {
   }
 }
 
+void drawBrushOutline(const RegionControls& controls) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (!controls.paintMode || io.WantCaptureMouse) return;
+  const float r = controls.brushRadiusPx;
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  draw->AddCircle(io.MousePos, r, IM_COL32(30, 30, 30, 200), 48, 3.0f);
+  draw->AddCircle(io.MousePos, r, io.KeyShift ? IM_COL32(90, 170, 255, 255) : IM_COL32(255, 170, 40, 255), 48,
+                  1.5f);
+}
+
 }  // namespace hs::viewer

@@ -38,5 +38,8 @@ void drawRegionSection(RegionControls& controls, const RegionStatus& status);
 // The bull's-eye alone: filled where chosen, a tooltip with the segment's name on hover, a
 // click toggles (controls.segmentToggled).
 void drawBullseye(RegionControls& controls, const RegionStatus& status, float diameter);
+// The brush's outline at the cursor while painting over the scene: orange adds, blue removes
+// (Shift). Nothing when not painting or over a panel.
+void drawBrushOutline(const RegionControls& controls);
 
 }  // namespace hs::viewer

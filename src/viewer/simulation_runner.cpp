@@ -15,6 +15,7 @@ using Clock = std::chrono::steady_clock;
 // Samples wait here only between two frames; a main thread that stopped taking them (a window
 // being dragged) must not make the list grow without bound.
 constexpr std::size_t kMaxPendingSamples = std::size_t(1) << 16;
+constexpr double kLumpedSecondsKept = 20;  // s of simulated time
 
 PumpSample pumpSample(const cardiac::StepSample& step) {
   PumpSample sample;
@@ -52,6 +53,7 @@ void setControls(const cardiac::Scenario& scenario, ViewerControls& controls) {
   controls.beatingDuration = scenario.cycle.beatingDuration;
   controls.beatingDisplace = float(scenario.cycle.beatingDisplace);
   controls.blood = bloodControlsFrom(scenario, 0);
+  controls.circulation = circulationControlsFrom(scenario);
 }
 
 cardiac::Scenario configuredScenario(const cardiac::Scenario& base, const ViewerControls& controls,
@@ -67,6 +69,7 @@ cardiac::Scenario configuredScenario(const cardiac::Scenario& base, const Viewer
   s.cycle.beatingDisplace = cardiac::Real(controls.beatingDisplace);
   region.configure(s);
   if (s.blood.enabled) applyBloodControls(controls.blood, s);
+  if (s.circulation.lumped) applyCirculationControls(controls.circulation, s);
   return s;
 }
 
@@ -94,6 +97,27 @@ void readStatus(const SimulationState& state, ViewerStatus& status) {
   pump.thesisTiming = scenario.cycle.mode == cardiac::TimingMode::Thesis;
   pump.valves = step.circulation ? step.flowStep.valves : cardiac::ValveStates{};
   pump.valveMode = scenario.circulation.valveMode;
+  readCirculationStatus(state, status.circulation);
+}
+
+void readCirculationStatus(const SimulationState& state, CirculationStatus& status) {
+  const cardiac::HeartSimulation& sim = *state.sim;
+  status = {};
+  const cardiac::LumpedCirculation* lumped = sim.lumped();
+  if (!lumped) return;
+  status.lumped = true;
+  // The wall beats with only part of its myocardium when a region is chosen: the lumped
+  // ventricle's contractility is scaled by that share, and so is the line the loop meets.
+  const cardiac::VolumeDrivenWall* wall = sim.drivenWall();
+  status.relations = lumped->relations(wall ? wall->beatingShare() : 1);
+  if (const cardiac::CirculationRecorder* recorder = state.monitor->circulation()) {
+    const std::vector<cardiac::CoupledBeat>& beats = recorder->beats();
+    for (auto it = beats.rbegin(); it != beats.rend(); ++it)
+      if (it->complete) {
+        status.lastBeat = it->lumped;
+        break;
+      }
+  }
 }
 
 SimulationRunner::Access::Access(SimulationRunner& r) : runner(r) {
@@ -126,6 +150,9 @@ void SimulationRunner::start(const cardiac::Scenario& scenario) {
   // The panel keeps its own bounded beat readout: the monitor lists no beats.
   cardiac::MonitorSettings settings;
   settings.beatList = false;
+  // The lumped samples the circulation panel copies from: far more than its last beats, so a
+  // frame that comes late (a window being dragged) finds what it missed.
+  settings.lumpedSamples = std::size_t(kLumpedSecondsKept / double(scenario.simulation.dt)) + 1;
   auto monitor = std::make_unique<cardiac::RunMonitor>(*sim, settings);
   std::optional<PumpReadout> pump;
   if (sim->hasHeart()) pump.emplace(monitor->last().cavity, double(scenario.simulation.dt));

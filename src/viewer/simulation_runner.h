@@ -55,6 +55,9 @@ cardiac::Scenario configuredScenario(const cardiac::Scenario& base, const Viewer
 
 // The simulation's part of the panels' status: scenario, time, phase, cavity, valves, beats.
 void readStatus(const SimulationState& state, ViewerStatus& status);
+// Its circulation part: with the lumped circulation, the pressure-volume relations and the
+// last complete beat's figures.
+void readCirculationStatus(const SimulationState& state, CirculationStatus& status);
 
 class SimulationRunner {
  public:

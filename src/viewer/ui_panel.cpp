@@ -91,6 +91,14 @@ void scenarioSection(ViewerControls& c, const ViewerStatus& s, const std::vector
   }
   tooltip("Built-in scenario presets (scenarios/*.toml); choosing one restarts the simulation");
   if (!s.hasHeart) return;
+  if (c.circulation.lumped) {
+    // The lumped circulation drives the wall: its volume, not a contraction, moves it (and it
+    // needs the beat: no cycle checkbox); its heart rate sits with the circulation's settings.
+    ImGui::TextDisabled("the lumped circulation drives the wall");
+    tooltip("circulation.lumped: the wall follows the lumped ventricle's volume. Heart rate, preload, "
+            "afterload and contractility are in the Circulation section below.");
+    return;
+  }
   if (ImGui::Checkbox("cardiac cycle", &c.cycleEnabled)) c.cycleChanged = true;
   tooltip("Let the wall beat (systole / diastole); changing it restarts the simulation");
   ImGui::BeginDisabled(!c.cycleEnabled);
@@ -174,9 +182,22 @@ void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
                       const std::vector<ScenarioChoice>& scenarios, int windowHeight) {
   beginSidePanel("heartsim", "heartsim viewer", 0, kPanelWidth, windowHeight);
   simulationSection(controls, status);
+  // Under the buttons that act on it, where it cannot be scrolled out of sight: an invalid
+  // simulation, a rejected setting, a saved screenshot.
+  if (!status.message.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.7f, 0.25f, 0.05f, 1));
+    ImGui::TextWrapped("%s", status.message.c_str());
+    ImGui::PopStyleColor();
+  }
   ImGui::Spacing();
   sectionTitle("Scenario");
   scenarioSection(controls, status, scenarios);
+  if (controls.circulation.lumped) {
+    ImGui::Spacing();
+    sectionTitle("Circulation");
+    drawCirculationSection(controls.circulation, controls.heartRateBpm, controls.cycleChanged,
+                           controls.showCirculation);
+  }
   if (status.hasBlood) {
     ImGui::Spacing();
     sectionTitle("Blood");
@@ -190,18 +211,13 @@ void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
   ImGui::Spacing();
   sectionTitle("Display");
   displaySection(controls, status);
-  if (!status.message.empty()) {
-    ImGui::Spacing();
-    ImGui::Separator();
-    ImGui::TextWrapped("%s", status.message.c_str());
-  }
   endSidePanel();
 }
 
-void drawColourKey(const ViewerStatus& status, float leftEdge, int windowHeight) {
+void drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge) {
   if (!status.hasHeart && !status.hasBlood) return;
   constexpr float kMargin = 10, kWidth = 260;
-  ImGui::SetNextWindowPos(ImVec2(leftEdge + kMargin, float(windowHeight) - kMargin), ImGuiCond_Always,
+  ImGui::SetNextWindowPos(ImVec2(leftEdge + kMargin, bottomEdge - kMargin), ImGuiCond_Always,
                           ImVec2(0, 1));
   // A fixed width: the speed bar fills the window, which must not size itself after it.
   ImGui::SetNextWindowSize(ImVec2(kWidth, 0), ImGuiCond_Always);
@@ -278,6 +294,7 @@ void drawHelpWindow(bool& open, int windowWidth, int windowHeight) {
       {"Shift + left drag", "remove it (paint mode)"},
       {"[ / ]", "smaller / larger brush"},
       {"Enter", "apply the region (restarts from t = 0)"},
+      {"C", "PV loop and Wiggers diagram on / off (lumped circulation)"},
       {"H / F1", "this help"},
       {"Esc", "quit"},
   };

@@ -10,6 +10,8 @@
 
 #include "render/renderer.h"
 #include "viewer/blood_controls.h"
+#include "viewer/circulation_controls.h"
+#include "viewer/circulation_panel.h"
 #include "viewer/pump_panel.h"
 #include "viewer/region_panel.h"
 
@@ -33,6 +35,8 @@ struct ViewerControls {
   RegionControls region;  // the beating region: bull's-eye, brush, Apply
   BloodControls blood;    // viscosity, particles, start, coupling, valves (restart)
   PumpControls pump;      // the right panel's plots
+  CirculationControls circulation;  // preload, afterload, contractility (lumped circulation; restart)
+  bool showCirculation = true;      // the PV loop and Wiggers panel under the heart (C)
 
   bool stepRequested = false;
   bool resetRequested = false;
@@ -63,6 +67,7 @@ struct ViewerStatus {
   std::string message;              // last event: "saved viewer.png", "simulation became invalid ..."
   RegionStatus region;
   PumpStatus pump;  // the right panel (with a heart)
+  CirculationStatus circulation;  // the PV loop and Wiggers panel (lumped circulation)
 };
 
 // A built-in scenario for the preset list; the description is its tooltip.
@@ -78,8 +83,9 @@ void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
 // rightEdge: the x (pixels) the corner's right side keeps to (the pump panel's left side).
 void drawStatusOverlay(const ViewerStatus& status, float rightEdge);
 // The colour key (the wall's colours, the blood's speed scale) at the bottom left of the
-// scene; leftEdge: the control panel's right side.
-void drawColourKey(const ViewerStatus& status, float leftEdge, int windowHeight);
+// scene; leftEdge: the control panel's right side, bottomEdge: the y (pixels) it keeps above
+// (the window's height, or the circulation panel's top).
+void drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge);
 void drawHelpWindow(bool& open, int windowWidth, int windowHeight);
 
 // "running at 0.4x real time" when behind, else "".

@@ -22,11 +22,14 @@
 #include "render/renderer.h"
 #include "render/scene.h"
 #include "viewer/camera_controller.h"
+#include "viewer/circulation_history.h"
 #include "viewer/pacing.h"
 #include "viewer/plot_history.h"
 #include "viewer/region_editor.h"
+#include "viewer/scene_framing.h"
 #include "viewer/simulation_runner.h"
 #include "viewer/ui_panel.h"
+#include "viewer/viewer_keys.h"
 #include "viewer/viewer_window.h"
 
 namespace hs::viewer {
@@ -88,10 +91,13 @@ class ViewerApp {
   ViewerStatus m_status;
   RegionEditor m_region;
   PlotHistory m_history;
+  CirculationHistory m_circulation;  // the lumped circulation's last beats (circulation panel)
+  float m_framedStrip = 0;           // the circulation panel's height the camera is framed for
   std::vector<BrushDab> m_dabs;  // painted this frame, applied at the frame's access
   bool m_sentPlaying = true;     // what the simulation thread was last told
   bool m_started = false;        // a simulation is running (a failed restart keeps it)
   BloodControls m_runningBlood;  // the blood settings of the simulation running
+  CirculationControls m_runningCirculation;  // and its circulation settings
   Clock::time_point m_lastFrame;
   double m_scroll = 0;
   int m_dragButton = -1;  // GLFW mouse button of a drag that began over the scene
@@ -127,6 +133,7 @@ class ViewerApp {
       m_region.startScenario(sim, m_controls.region);
       bounds = render::sceneBounds(sim);
       m_status.hasHeart = sim.hasHeart();
+      m_status.circulation.lumped = sim.lumped() != nullptr;
       m_status.pump.scale = volumeScaleFor(s.monitor->last().cavity);
       const int blood = sim.hasBlood() ? int(sim.particles().size() - sim.firstBloodParticle()) : 0;
       m_controls.blood = bloodControlsFrom(scenario, blood);
@@ -151,23 +158,35 @@ class ViewerApp {
     }
     m_started = true;
     m_runningBlood = m_controls.blood;
+    m_runningCirculation = m_controls.circulation;
     m_status.message.clear();
     m_history.clear();
+    m_circulation.clear();
     return true;
   }
 
   // The pump panel's width, when it is shown (with a heart).
   float rightPanelWidth() const { return m_status.hasHeart ? kPumpPanelWidth : 0; }
 
-  // Frames the bounds in the part of the window between the panels.
+  // The circulation panel's height when it is shown (the lumped circulation, not hidden by C).
+  float stripHeight(int windowHeight) const {
+    return m_status.circulation.lumped && m_controls.showCirculation ? circulationPanelHeight(windowHeight) : 0;
+  }
+
+  // Frames the bounds in the part of the window between the panels, above the circulation panel.
   void resetCamera(render::View view) {
     int w = 0, h = 0;
     glfwGetWindowSize(m_window.handle, &w, &h);
-    h = std::max(h, 1);
-    const float free = std::max(float(w) - kPanelWidth - rightPanelWidth(), float(w) * 0.3f);
-    m_camera->setAspect(free / float(h));
-    m_camera->setView(view);
-    m_camera->pan((kPanelWidth - rightPanelWidth()) / 2, 0, h);
+    m_framedStrip = stripHeight(h);
+    frameView(*m_camera, view, {kPanelWidth, float(w) - rightPanelWidth(), m_framedStrip}, w, h);
+  }
+
+  // The circulation panel shown, hidden or resized: the heart moves into the space left,
+  // keeping the user's view.
+  void followStrip(int windowHeight) {
+    const float strip = stripHeight(windowHeight);
+    refitForStrip(*m_camera, m_framedStrip, strip, windowHeight);
+    m_framedStrip = strip;
   }
 
   void handleInput() {
@@ -196,30 +215,17 @@ class ViewerApp {
     m_scroll = 0;
 
     if (io.WantCaptureKeyboard) return;
-    const auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
-    if (pressed(GLFW_KEY_1) || pressed(GLFW_KEY_F)) m_controls.viewRequested = render::View::Front;
-    if (pressed(GLFW_KEY_2) || pressed(GLFW_KEY_L)) m_controls.viewRequested = render::View::Left;
-    if (pressed(GLFW_KEY_3)) m_controls.viewRequested = render::View::Right;
-    if (pressed(GLFW_KEY_4) || pressed(GLFW_KEY_T)) m_controls.viewRequested = render::View::Top;
-    if (pressed(GLFW_KEY_R)) m_controls.resetCameraRequested = true;
-    if (pressed(GLFW_KEY_SPACE)) m_controls.playing = !m_controls.playing;
-    if (ImGui::IsKeyPressed(GLFW_KEY_S, true)) m_controls.stepRequested = true;
-    if (pressed(GLFW_KEY_BACKSPACE)) m_controls.resetRequested = true;
-    if (pressed(GLFW_KEY_P)) m_controls.screenshotRequested = true;
-    if (pressed(GLFW_KEY_H) || pressed(GLFW_KEY_F1)) m_controls.showHelp = !m_controls.showHelp;
-    if (pressed(GLFW_KEY_B) && m_region.available()) region.paintMode = !region.paintMode;
-    // Each press scales the brush by 1.25, so the range is crossed in a dozen presses.
-    if (ImGui::IsKeyPressed(GLFW_KEY_LEFT_BRACKET, true)) region.brushRadiusPx /= 1.25f;
-    if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT_BRACKET, true)) region.brushRadiusPx *= 1.25f;
-    region.brushRadiusPx =
-        std::clamp(region.brushRadiusPx, RegionControls::kMinBrushPx, RegionControls::kMaxBrushPx);
-    if (pressed(GLFW_KEY_ENTER) || pressed(GLFW_KEY_KP_ENTER)) region.applyRequested = true;
-    if (pressed(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(m_window.handle, GLFW_TRUE);
+    if (readKeys(m_controls, m_region.available())) glfwSetWindowShouldClose(m_window.handle, GLFW_TRUE);
   }
 
   void applyRequests() {
     ViewerControls& c = m_controls;
     const bool regionApplied = m_region.handleRequests(c.region);
+    if (c.circulation.defaultsRequested) {
+      c.circulation = circulationControlsFrom(m_baseScenario);
+      c.heartRateBpm = float(m_baseScenario.cycle.heartRateBpm);
+      c.circulation.changed = true;
+    }
     if (c.scenarioChanged && c.scenarioIndex >= 0) {
       const std::string& name = m_scenarios[std::size_t(c.scenarioIndex)].name;
       try {
@@ -227,12 +233,12 @@ class ViewerApp {
       } catch (const std::exception& e) {
         m_status.message = "cannot load " + name + ": " + e.what();
       }
-    } else if (regionApplied || c.resetRequested || c.cycleChanged || c.blood.changed) {
-      if (!restart() && c.blood.changed) {
-        // Back to what runs, so that Reset restarts what is shown.
-        c.blood = m_runningBlood;
-        m_status.message += " (blood settings put back)";
-      }
+    } else if (regionApplied || c.resetRequested || c.cycleChanged || c.blood.changed || c.circulation.changed) {
+      // A rejected setting goes back to what runs, so that Reset restarts what is shown.
+      const bool restarted = restart();
+      if (!restarted && c.blood.changed) c.blood = m_runningBlood, m_status.message += " (blood settings put back)";
+      if (!restarted && c.circulation.changed)
+        c.circulation = m_runningCirculation, m_status.message += " (circulation settings put back)";
       if (regionApplied && m_status.message.empty())
         m_status.message = "beating region applied: " + std::to_string(m_region.selection().count()) +
                            " vertices; restarted from t = 0";
@@ -240,6 +246,7 @@ class ViewerApp {
     if (c.viewRequested) resetCamera(*c.viewRequested);
     if (c.resetCameraRequested) resetCamera(render::View::Front);
     c.scenarioChanged = c.resetRequested = c.cycleChanged = c.resetCameraRequested = c.blood.changed = false;
+    c.circulation.changed = c.circulation.defaultsRequested = false;
     c.viewRequested.reset();
   }
 
@@ -254,25 +261,7 @@ class ViewerApp {
     query.clip.enabled = m_controls.clip;
     query.clip.normal = render::Vec3f(0, 0, 1);
     query.clip.offset = -m_controls.clipZ;
-    const float length = std::hypot(x1 - x0, y1 - y0);
-    const int steps = std::max(1, int(std::ceil(length / (0.5f * query.radius))));
-    for (int i = 1; i <= steps; ++i) {
-      const float t = float(i) / float(steps);
-      query.centreX = x0 + t * (x1 - x0);
-      query.centreY = y0 + t * (y1 - y0);
-      m_dabs.push_back({query, erase});
-    }
-  }
-
-  // The brush's outline at the cursor while painting: orange adds, blue removes (Shift).
-  void drawBrushOutline() const {
-    const ImGuiIO& io = ImGui::GetIO();
-    if (!m_controls.region.paintMode || io.WantCaptureMouse || !m_status.hasHeart) return;
-    const float r = m_controls.region.brushRadiusPx;
-    ImDrawList* draw = ImGui::GetBackgroundDrawList();
-    draw->AddCircle(io.MousePos, r, IM_COL32(30, 30, 30, 200), 48, 3.0f);
-    draw->AddCircle(io.MousePos, r, io.KeyShift ? IM_COL32(90, 170, 255, 255) : IM_COL32(255, 170, 40, 255),
-                    48, 1.5f);
+    for (const BrushQuery& dab : brushDabsAlong(query, x0, y0, x1, y1)) m_dabs.push_back({dab, erase});
   }
 
   // The frame's one visit to the simulation thread's state (the worker waits meanwhile, so it
@@ -296,6 +285,8 @@ class ViewerApp {
       m_status.realTimeFactor = s.paceFactor;
       m_status.behind = s.behind && s.playing;
       readStatus(s, m_status);
+      if (const cardiac::CirculationRecorder* recorder = s.monitor->circulation())
+        m_circulation.update(recorder->samples(), recorder->beatStarts());
       m_status.bloodColour = c.bloodColour;
       m_region.fillStatus(m_status.region, sim.scenario().cycle.enabled);
       scene = render::buildScene(sim, options);
@@ -362,10 +353,13 @@ class ViewerApp {
     glfwGetFramebufferSize(m_window.handle, &fbw, &fbh);
     drawControlPanel(m_controls, m_status, m_scenarios, h);
     drawPumpPanel(m_controls.pump, m_status.pump, m_history, w, h);
+    followStrip(h);
     drawStatusOverlay(m_status, float(w) - rightPanelWidth());
-    drawColourKey(m_status, kPanelWidth, h);
+    drawColourKey(m_status, kPanelWidth, float(h) - stripHeight(h));
+    if (m_controls.showCirculation)
+      drawCirculationPanel(m_status.circulation, m_circulation, kPanelWidth, float(w) - rightPanelWidth(), h);
     drawHelpWindow(m_controls.showHelp, w, h);
-    drawBrushOutline();
+    if (m_status.hasHeart) drawBrushOutline(m_controls.region);
     ImGui::Render();
 
     if (fbw > 0 && fbh > 0) {

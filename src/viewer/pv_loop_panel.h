@@ -1,0 +1,20 @@
+#pragma once
+// The live pressure-volume loop of the left ventricle (LV pressure in mmHg against LV volume in
+// mL): the last three beats, the newest strongest, a dot at the present step, the valve events
+// of the last complete beat at its corners, and the end-systolic (P = Ees (V - V0)) and
+// end-diastolic (P = A (exp(B (V - V0)) - 1)) relations it moves between (Suga & Sagawa 1974),
+// as physiology texts draw it. Needs an ImGui frame in progress; what it draws is computed by
+// circulation_history.h (tested).
+#include <imgui.h>
+
+#include "cardiac/circulation_trace.h"
+#include "viewer/circulation_history.h"
+
+namespace hs::viewer {
+
+// Draws into a `size` pixels region at the cursor (and advances the cursor past it).
+// `relations`: the effective ones (the beating share scales Ees).
+void drawPressureVolumeLoop(const CirculationHistory& history,
+                            const cardiac::PressureVolumeRelations& relations, ImVec2 size);
+
+}  // namespace hs::viewer
