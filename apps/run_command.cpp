@@ -12,6 +12,7 @@
 #include "cardiac/run_monitor.h"
 #include "exit_codes.h"
 #include "io/output_paths.h"
+#include "io/circulation_plots.h"
 #include "io/metrics_csv.h"
 #include "io/run_report.h"
 #include "io/simulation_vtk.h"
@@ -109,6 +110,27 @@ void writeFailureSummary(const cardiac::Scenario& scenario, const io::RunTiming&
   if (!summary) std::cerr << "heartsim: error: " << (outDir / "summary.json").string() << ": write failed\n";
 }
 
+// With the lumped circulation: the last complete beat's pressure-volume loop (between its
+// end-systolic and end-diastolic relations) and its Wiggers diagram, beside metrics.csv.
+// Nothing is drawn before a beat has completed.
+bool writeCirculationPlots(const cardiac::Scenario& scenario, const cardiac::HeartSimulation& sim,
+                           const cardiac::RunMonitor& monitor, const fs::path& outDir) {
+  const cardiac::CirculationRecorder* recorder = monitor.circulation();
+  if (!recorder) return true;
+  const std::vector<cardiac::CirculationSample> beat = io::lastCompleteBeat(recorder->samples(), recorder->beatStarts());
+  if (beat.size() < 2) return true;
+  try {
+    const cardiac::PressureVolumeRelations relations = sim.lumped()->relations(sim.drivenWall()->beatingShare());
+    io::writePvLoopPng((outDir / "pv_loop.png").string(), {{scenario.name, beat}}, relations,
+                       scenario.name + ": pressure-volume loop");
+    io::writeWiggersPng((outDir / "wiggers.png").string(), beat, scenario.name + ": one beat (Wiggers diagram)");
+  } catch (const std::exception& e) {
+    std::cerr << "heartsim: error: " << e.what() << '\n';
+    return false;
+  }
+  return true;
+}
+
 // summary.json, then the same report on stdout (--json) or one line on stderr.
 int report(const cardiac::Scenario& scenario, const io::RunTiming& timing, const cardiac::RunMonitor& monitor,
            const fs::path& outDir, bool json) {
@@ -154,6 +176,7 @@ int runCommand(const RunOptions& options) {
                                  timing.wallSeconds);
   if (simulated == kExitInvalidSimulation) writeFailureSummary(*scenario, timing, monitor, outDir);
   if (simulated != kExitOk) return simulated;
+  if (!writeCirculationPlots(*scenario, *sim, monitor, outDir)) return kExitFailure;
   return report(*scenario, timing, monitor, outDir, options.json);
 }
 

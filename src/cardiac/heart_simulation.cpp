@@ -135,6 +135,8 @@ void HeartSimulation::buildBlood() {
     m_circulation.emplace(*m_model, m_scenario);
     m_vesselCapacity = vesselCapacity(m_scenario, *m_model);
     if (m_lumped) m_circulation->valves.closeOutlet(m_circulation->loop.outletLid());
+    if (m_lumped && m_scenario.circulation.aorticValveArea > 0)
+      m_circulation->valves.narrowAorticOpening(std::sqrt(m_scenario.circulation.aorticValveArea / Real(3.14159265358979)));
   }
   m_fluid = std::make_unique<pbd::FluidSolver>(bloodSolverSettings(m_scenario));
   const Real inverseMass = Real(1) / m_fluid->settings().fluid.particleMass;
@@ -193,7 +195,8 @@ void HeartSimulation::beginStep(const pbd::StepContext& context) {
   if (!m_circulation) return;
   if (m_lumped) {
     const CirculationSample& lumped = m_lumped->last();
-    m_circulation->valves.follow({lumped.mitralOpen, lumped.aorticOpen});
+    // A regurgitant valve lets blood back in 3D as in the lumped model.
+    m_circulation->valves.follow({lumped.mitralFlow != 0, lumped.aorticOpen || lumped.aorticFlow < 0});
     m_circulation->loop.allowOutflow(lumped.aorticFlow * double(context.dt), double(m_circulation->meter.particleVolume()));
     // The atrium drives the inflow vessel by its pressure over the ventricle's while the mitral
     // valve is open; against the shut valve it would only squeeze the column.

@@ -51,6 +51,9 @@ class Valves {
   // A lid over the outflow vessel's far end, always closed (blood_loop.h takes blood out
   // below it as the lumped aortic flow says).
   void closeOutlet(const Orifice& lid) { m_outletLid = lid; }
+  // A stenotic aortic valve: open, it lets blood through a central opening of this radius only
+  // (m, smaller than the orifice); the ring around it stays shut.
+  void narrowAorticOpening(Real radius) { m_aorticOpening = radius; }
   [[nodiscard]] const ValveStates& states() const { return m_states; }
 
   // Closed valves as walls: for the fluid solver's working positions (points[k] is particle
@@ -64,6 +67,7 @@ class Valves {
 
   Orifice m_mitral, m_aortic;
   std::optional<Orifice> m_outletLid;
+  std::optional<Real> m_aorticOpening;
   ValveMode m_mode;
   bool m_cycleEnabled;
   Real m_radius;

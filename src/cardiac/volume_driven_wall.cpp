@@ -41,6 +41,11 @@ double radialTaper(double y, double endoLongAxis) {
   return s * s * (3 - 2 * s);
 }
 
+// The shell is one tetrahedron thick: beyond this contraction (about half its radius inward at
+// 0.4 radial shortening) its tetrahedra invert. The cavity then stops short of the lumped
+// volume, which the run reports (cavity_volume_error_max), rather than breaking the wall.
+constexpr double kMaxContraction = 1.2;
+
 }  // namespace
 
 VolumeDrivenWall::VolumeDrivenWall(const LvModel& model, const std::vector<Index>& beating, Index firstParticle,
@@ -98,7 +103,7 @@ void VolumeDrivenWall::drive(const std::vector<Vec3>& positions, std::vector<Vec
     const double v = predictedVolume(a);
     const double slope = (predictedVolume(a + h) - v) / h;
     if (!(slope < 0)) break;
-    const double next = std::clamp(a - (v - wanted) / slope, -1.0, 2.0);
+    const double next = std::clamp(a - (v - wanted) / slope, -kMaxContraction, kMaxContraction);
     const bool converged = std::abs(next - a) < 1e-7;
     a = next;
     if (converged) break;

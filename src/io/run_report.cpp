@@ -16,6 +16,33 @@ std::string hex(std::uint64_t value) {
   return buffer;
 }
 
+// The lumped circulation's figures in clinical units: means over the complete beats after the
+// first (null without one, and e_to_a null where a beat had no A wave), and over the whole run
+// how the 3D heart followed it.
+void addCirculationReport(nlohmann::ordered_json& heart, const cardiac::CirculationRecorder& recorder) {
+  const cardiac::CoupledMeans m = recorder.means();
+  const bool measured = m.count > 0;
+  auto figure = [measured](double value) { return measured ? nlohmann::ordered_json(value) : nlohmann::ordered_json(); };
+  constexpr double mmHg = cardiac::kPascalPerMmHg;
+  heart["aortic_systolic_mmhg"] = figure(m.aorticSystolic / mmHg);
+  heart["aortic_diastolic_mmhg"] = figure(m.aorticDiastolic / mmHg);
+  heart["lv_peak_mmhg"] = figure(m.lvPeak / mmHg);
+  heart["lv_end_diastolic_mmhg"] = figure(m.lvEndDiastolic / mmHg);
+  heart["isovolumic_contraction_ms"] = figure(m.isovolumicContraction * 1e3);
+  heart["isovolumic_relaxation_ms"] = figure(m.isovolumicRelaxation * 1e3);
+  heart["e_to_a"] = measured && m.eToA ? nlohmann::ordered_json(*m.eToA) : nlohmann::ordered_json();
+  heart["regurgitant_fraction"] = figure(m.regurgitantFraction);
+  heart["aortic_mean_gradient_mmhg"] = figure(m.aorticMeanGradient / mmHg);
+  heart["aortic_peak_jet_m_s"] = figure(m.aorticJet);
+  heart["lumped_stroke_volume_ml"] = figure(m.strokeVolume * kClinical.volume);
+  heart["both_valves_open_steps"] = recorder.bothValvesOpenSteps();
+  heart["cavity_volume_error_max"] = recorder.cavityVolumeErrorMax();
+  heart["cavity_volume_step_max_ml"] = recorder.cavityStepMax() * kClinical.volume;
+  const std::optional<double> flowError = recorder.aorticFlowErrorMax();
+  heart["aortic_flow_error_max"] = flowError ? nlohmann::ordered_json(*flowError) : nlohmann::ordered_json();
+  heart["vessel_fill_min"] = recorder.vesselFillMin();
+}
+
 // The wall's part: mesh, volume errors, cavity and beats.
 void addHeartReport(nlohmann::ordered_json& report, const cardiac::RunSummary& run) {
   report["tissue"] = {
@@ -48,6 +75,7 @@ void addHeartReport(nlohmann::ordered_json& report, const cardiac::RunSummary& r
   };
   report["beats"] = run.beats.beats().size();
   report["heart"] = heartPumpReport(run.beats);
+  if (run.circulation) addCirculationReport(report["heart"], *run.circulation);
 }
 
 nlohmann::ordered_json bloodReport(const cardiac::RunSummary& run, int iterations) {
@@ -120,6 +148,15 @@ std::string runSummaryLine(const cardiac::Scenario& scenario, const RunTiming& t
                   m.strokeVolume * u.volume, u.volumeUnit, m.cardiacOutput * u.output, u.outputUnit,
                   m.regurgitantVolume * u.volume, u.volumeUnit);
     s << "; " << pump;
+  }
+  if (run.circulation) {
+    if (const cardiac::CoupledMeans c = run.circulation->means(); c.count > 0) {
+      char pressures[120];
+      std::snprintf(pressures, sizeof pressures, "aortic pressure %.0f/%.0f mmHg, LV peak %.0f mmHg",
+                    c.aorticSystolic / cardiac::kPascalPerMmHg, c.aorticDiastolic / cardiac::kPascalPerMmHg,
+                    c.lvPeak / cardiac::kPascalPerMmHg);
+      s << "; " << pressures;
+    }
   }
   if (run.blood)
     s << "; " << run.bloodFinal.particles << " blood particles, " << run.bloodLost << " lost, " << run.bloodInsideWall
