@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -88,5 +89,51 @@ TEST(CliLumped, NormalLumpedGivesAHeartsPressuresAndItsPlots) {
               h.at("aortic_flow_error_max").dump().c_str(), h.at("vessel_fill_min").get<double>(),
               j.at("blood").at("lost").get<int>());
 }
+
+
+// The pathology presets against their textbook ranges (docs/physiology.md), on the beat after
+// the first (1.8 s at 72 bpm): the lumped model's figures (gradient, regurgitant fraction) and
+// the 3D heart's (EDV, EF, the jet through the 3D opening; normal-lumped's jet is 2.4 m/s).
+struct Check {
+  const char* key;
+  double lo, hi;
+};
+struct Pathology {
+  const char* name;
+  std::vector<Check> checks;
+};
+
+class PathologyPreset : public ::testing::TestWithParam<Pathology> {};
+
+TEST_P(PathologyPreset, ShowsItsTextbookSigns) {
+  const Pathology& p = GetParam();
+  const auto dir = scratchDir(std::string("pathology_") + p.name);
+  const CliResult r = runHeartsim(std::string("run ") + p.name + " --duration 1.8 --threads 2 --json --out out", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const auto& h = j.at("heart");
+  ASSERT_EQ(h.at("beats_averaged").get<int>(), 1) << h;
+  for (const Check& c : p.checks) {
+    const double v = h.at(c.key).get<double>();
+    EXPECT_GE(v, c.lo) << c.key;
+    EXPECT_LE(v, c.hi) << c.key;
+    std::printf("%s: %s = %.3f\n", p.name, c.key, v);
+  }
+  EXPECT_EQ(j.at("blood").at("lost").get<int>(), 0);
+  EXPECT_EQ(j.at("blood").at("inside_wall").get<int>(), 0);
+}
+
+constexpr double kAny = 1e9;
+INSTANTIATE_TEST_SUITE_P(
+    CliLumped, PathologyPreset,
+    ::testing::Values(Pathology{"aortic-stenosis", {{"aortic_mean_gradient_mmhg", 40, kAny}, {"aortic_peak_jet_m_s", 3, kAny}}},
+                      Pathology{"mitral-regurgitation", {{"regurgitant_fraction", 0.30, 0.50}}},
+                      Pathology{"dilated-cardiomyopathy", {{"edv_ml", 200, kAny}, {"ejection_fraction", 0, 0.35}}},
+                      Pathology{"anterior-infarct", {{"ejection_fraction", 0.35, 0.48}}}),
+    [](const ::testing::TestParamInfo<Pathology>& param) {
+      std::string name = param.param.name;
+      std::replace(name.begin(), name.end(), '-', '_');
+      return name;
+    });
 
 }  // namespace
