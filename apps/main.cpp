@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bench_command.h"
+#include "compare_command.h"
 #include "exit_codes.h"
 #include "render_command.h"
 #include "run_command.h"
@@ -36,6 +37,8 @@ struct Commands {
   hs::app::ViewOptions view;
   hs::app::BenchOptions bench;
   hs::app::ValidateOptions validate;
+  hs::app::CompareOptions compare;
+  CLI::App* compareApp = nullptr;
   CLI::App* runApp = nullptr;
   CLI::App* renderApp = nullptr;
   CLI::App* viewApp = nullptr;
@@ -53,6 +56,18 @@ void addRunCommand(CLI::App& app, Commands& c) {
   runApp->add_flag("--json", run.json, "Print one JSON summary object on stdout");
   runApp->add_flag("--vtk", run.vtk, "Write VTK frames and a .pvd series for ParaView");
   addSetOption(runApp, run.overrides);
+}
+
+void addCompareCommand(CLI::App& app, Commands& c) {
+  hs::app::CompareOptions& compare = c.compare;
+  CLI::App* compareApp = c.compareApp = app.add_subcommand(
+      "compare", "Run two lumped-circulation scenarios and draw their pressure-volume loops on one plot");
+  compareApp->add_option("scenarios", compare.scenarios, "Two built-in scenario names or .toml paths")
+      ->required()
+      ->expected(2);
+  compareApp->add_option("--duration", compare.duration, "Simulated time of each (s); default 1.8, two beats");
+  addThreadsOption(compareApp, compare.threads);
+  compareApp->add_option("--out", compare.outDir, "Output directory (default: results/compare_<a>_<b>)");
 }
 
 void addRenderCommand(CLI::App& app, Commands& c) {
@@ -155,6 +170,7 @@ int dispatch(Commands& c) {
   if (c.viewApp->parsed()) return viewCommand(c.view);
   if (c.benchApp->parsed()) return benchCommand(c.bench);
   if (c.damBreakApp->parsed()) return validateDamBreakCommand(c.validate);
+  if (c.compareApp->parsed()) return compareCommand(c.compare);
   return kExitBadInput;
 }
 
@@ -171,6 +187,7 @@ int main(int argc, char** argv) {
   addViewCommand(app, commands);
   addBenchCommand(app, commands);
   addValidateCommand(app, commands);
+  addCompareCommand(app, commands);
   if (const std::optional<std::string> unknown = unknownSubcommand(app, argc, argv)) {
     std::cerr << "heartsim: error: " << *unknown << " (see heartsim --help)\n";
     return kExitBadInput;

@@ -123,6 +123,19 @@ TEST_P(PathologyPreset, ShowsItsTextbookSigns) {
   EXPECT_EQ(j.at("blood").at("inside_wall").get<int>(), 0);
 }
 
+// Two presets side by side: two loops on one plot; a scenario without the lumped circulation is
+// refused with a line naming it.
+TEST(CliLumped, CompareDrawsTwoLoopsOnOnePlot) {
+  const auto dir = scratchDir("lumped_compare");
+  const CliResult r = runHeartsim("compare normal-lumped dilated-cardiomyopathy --threads 2 --out out", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "pv_compare.png")) << r.err;
+  const CliResult bad = runHeartsim("compare normal normal-lumped --out bad", dir);
+  EXPECT_EQ(bad.exitCode, 2) << bad.err;
+  EXPECT_NE(bad.err.find("normal has no lumped circulation"), std::string::npos) << bad.err;
+  EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+}
+
 constexpr double kAny = 1e9;
 INSTANTIATE_TEST_SUITE_P(
     CliLumped, PathologyPreset,
