@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -83,7 +84,7 @@ void HeartSimulation::buildLumpedCirculation() {
   m_drivenWall.emplace(model, selectBeatingVertices(cycle, model), m_firstWallParticle, c.wallMotion);
 
   LumpedParameters p = c.lumpedParameters;
-  const double pi = 3.14159265358979323846;
+  constexpr double pi = std::numbers::pi;
   p.pulmonaryVenousPressure = double(c.atrialPressureMmHg) * kPascalPerMmHg;
   p.mitralArea = pi * double(model.params.mitralRadius) * double(model.params.mitralRadius);
   p.aorticRootArea = pi * double(model.params.aorticRadius) * double(model.params.aorticRadius);
@@ -136,7 +137,7 @@ void HeartSimulation::buildBlood() {
     m_vesselCapacity = vesselCapacity(m_scenario, *m_model);
     if (m_lumped) m_circulation->valves.closeOutlet(m_circulation->loop.outletLid());
     if (m_lumped && m_scenario.circulation.aorticValveArea > 0)
-      m_circulation->valves.narrowAorticOpening(std::sqrt(m_scenario.circulation.aorticValveArea / Real(3.14159265358979)));
+      m_circulation->valves.narrowAorticOpening(std::sqrt(m_scenario.circulation.aorticValveArea / std::numbers::pi_v<Real>));
   }
   m_fluid = std::make_unique<pbd::FluidSolver>(bloodSolverSettings(m_scenario));
   const Real inverseMass = Real(1) / m_fluid->settings().fluid.particleMass;
