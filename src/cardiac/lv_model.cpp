@@ -21,6 +21,12 @@ using detail::Vec3d;
 constexpr double kEdgePerRadius = 0.21;
 constexpr double kMinResolution = 0.25;
 constexpr double kMaxResolution = 8.0;
+// Proportions the mesher is built for: a ventricle at most this many endocardial radii long,
+// vessels at most this many radii long and a wall at most this many radii thick. A real heart
+// is about 2 radii long; the element size follows the radius, so a needle 1e6 m long would mesh
+// for a minute into millions of elements before anything else could refuse it.
+constexpr double kMaxLengthInRadii = 20.0;
+
 // The gap between the orifices and between each orifice and the rim, in units of the vessel
 // wall thickness: the outer walls must leave at least one wall thickness of plate between them.
 constexpr double kMinGapInWalls = 3.0;
@@ -56,6 +62,16 @@ void validate(const LvGeometryParams& p) {
   if (!(p.mitralRadius > p.aorticRadius)) {
     fail("mitral_radius", "must be larger than model.aortic_radius (" + fmt(p.aorticRadius) + " m), got " +
                               fmt(p.mitralRadius));
+  }
+  const std::pair<const char*, Real> lengths[] = {{"endo_long_axis", p.endoLongAxis},
+                                                  {"wall_thickness", p.wallThickness},
+                                                  {"inflow_vessel_length", p.inflowVesselLength},
+                                                  {"outflow_vessel_length", p.outflowVesselLength}};
+  for (const auto& [key, value] : lengths) {
+    if (double(value) > kMaxLengthInRadii * double(p.endoRadius))
+      fail(key, "must be at most " + fmt(kMaxLengthInRadii) + " x model.endo_radius (" +
+                    fmt(kMaxLengthInRadii * double(p.endoRadius)) + " m) for a mesh of the heart's proportions, got " +
+                    fmt(value));
   }
   if (!(p.baseThickness < p.endoLongAxis)) {
     fail("base_thickness", "must be smaller than model.endo_long_axis (" + fmt(p.endoLongAxis) + " m), got " +

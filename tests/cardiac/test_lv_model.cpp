@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -335,6 +337,11 @@ TEST(LvModel, BadParametersThrowNamingTheKey) {
       {"model.mitral_radius", [](LvGeometryParams& p) { p.mitralRadius = 1.5f; }},  // does not fit
       {"model.resolution", [](LvGeometryParams& p) { p.resolution = 0.1f; }},
       {"model.resolution", [](LvGeometryParams& p) { p.resolution = 9; }},
+      // A needle: refused before meshing (it would take a minute), see LvModel.NeedleIsRefusedAtOnce.
+      {"model.endo_long_axis", [](LvGeometryParams& p) { p.endoLongAxis = 1e6f; }},
+      {"model.inflow_vessel_length", [](LvGeometryParams& p) { p.inflowVesselLength = 41; }},
+      {"model.outflow_vessel_length", [](LvGeometryParams& p) { p.outflowVesselLength = 1e6f; }},
+      {"model.wall_thickness", [](LvGeometryParams& p) { p.wallThickness = 41; }},
   };
   for (const Case& c : cases) {
     LvGeometryParams p;
@@ -355,6 +362,21 @@ TEST(LvModel, BadParametersThrowNamingTheKey) {
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "model.mitral_radius: must be larger than model.aortic_radius (0.55 m), got 0.2");
   }
+}
+
+// Geometry that cannot be meshed in reasonable time is refused at once, in the validation
+// before any meshing (the needle used to mesh for 61 s).
+TEST(LvModel, NeedleIsRefusedAtOnce) {
+  LvGeometryParams p;
+  p.endoLongAxis = 1e6f;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    buildLvModel(p);
+    ADD_FAILURE() << "a needle 1e6 m long was meshed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("at most 20 x model.endo_radius (40 m)"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
 }
 
 }  // namespace
