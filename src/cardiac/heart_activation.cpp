@@ -5,16 +5,11 @@
 namespace hs::cardiac {
 
 std::vector<double> regionShares(const CardiacCycle& cycle, const LvModel& model, Index firstParticle) {
-  std::size_t myocardium = 0;
-  for (std::size_t v = 0; v < model.region.size(); v += 2) myocardium += model.region[v] == Region::Myocardium;
   std::vector<double> shares;
   for (const BeatingRegion& region : cycle.regions()) {
-    std::size_t count = 0;
-    for (Index particle : region.particles) {
-      const Index v = particle - firstParticle;
-      count += v % 2 == 0 && model.region[v] == Region::Myocardium;
-    }
-    shares.push_back(myocardium > 0 ? double(count) / double(myocardium) : 0);
+    std::vector<Index> vertices(region.particles);
+    for (Index& v : vertices) v -= firstParticle;
+    shares.push_back(myocardiumShare(model, vertices));
   }
   return shares;
 }

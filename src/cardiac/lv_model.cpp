@@ -242,4 +242,12 @@ Real cavityVolume(const LvModel& model, const std::vector<Vec3>& positions) {
   return Real(sum / 6.0);
 }
 
+double myocardiumShare(const LvModel& model, const std::vector<Index>& vertices) {
+  auto cavitySide = [&model](Index v) { return v % 2 == 0 && model.region[v] == Region::Myocardium; };
+  std::size_t all = 0;
+  for (std::size_t v = 0; v < model.region.size(); ++v) all += cavitySide(Index(v));
+  const auto chosen = std::size_t(std::count_if(vertices.begin(), vertices.end(), cavitySide));
+  return all > 0 ? double(chosen) / double(all) : 0;
+}
+
 }  // namespace hs::cardiac

@@ -76,4 +76,9 @@ LvModel buildLvModel(const LvGeometryParams& params);
 // orifice ring, by the divergence theorem.
 Real cavityVolume(const LvModel& model, const std::vector<Vec3>& positions);
 
+// Share of the myocardium's cavity-side vertices (inner layer, even ids) among `vertices`
+// (model vertex ids, each at most once): how much of the wall they are, as the lumped
+// circulation weighs contractility.
+double myocardiumShare(const LvModel& model, const std::vector<Index>& vertices);
+
 }  // namespace hs::cardiac

@@ -55,18 +55,13 @@ VolumeDrivenWall::VolumeDrivenWall(const LvModel& model, const std::vector<Index
   const std::size_t n = x.size();
   std::vector<std::uint8_t> beats(n, 0);
   for (Index v : beating) beats[v] = 1;
-  // The share that beats, counted on the cavity side (inner layer, even ids: lv_model.h).
-  std::size_t cavitySide = 0, active = 0;
   double apexY = 0, plateTop = 0, vesselTop = 0;
   for (std::size_t v = 0; v < n; ++v) {
     apexY = std::min(apexY, double(x[v].y()));
     vesselTop = std::max(vesselTop, double(x[v].y()));
     if (model.region[v] == Region::BasePlate) plateTop = std::max(plateTop, double(x[v].y()));
-    if (model.region[v] != Region::Myocardium || v % 2 != 0) continue;
-    ++cavitySide;
-    active += beats[v];
   }
-  m_beatingShare = cavitySide > 0 ? double(active) / double(cavitySide) : 0;
+  m_beatingShare = myocardiumShare(model, beating);
   m_longitudinalTravel = double(settings.longitudinal) * double(model.longAxisLength) * m_beatingShare;
   std::vector<std::uint8_t> pinned(n, 0);
   for (Index v : model.pinned) pinned[v] = 1;

@@ -106,17 +106,6 @@ inline KeySpec makeSpec(std::string name, std::string type, std::string unit, st
   return k;
 }
 
-template <class F>
-KeySpec realKey(std::string name, F field, Range range, std::string unit, std::string doc) {
-  KeySpec k = makeSpec(std::move(name), "number", std::move(unit), range.text(), std::move(doc));
-  k.expect = withUnit("a finite number" + spaced(k.range), k.unit);
-  k.set = [field, range, expect = k.expect](Scenario& s, const toml::node& n) {
-    field(s) = readReal(n, range, expect);
-  };
-  k.get = [field](const Scenario& s) { return formatReal(fieldOf(field, s)); };
-  return k;
-}
-
 // A number given in clinical units (the key's `unit`) and kept in SI: field = value * toSi.
 template <class F>
 KeySpec clinicalKey(std::string name, F field, double toSi, Range range, std::string unit, std::string doc) {
@@ -128,6 +117,12 @@ KeySpec clinicalKey(std::string name, F field, double toSi, Range range, std::st
   };
   k.get = [field, toSi](const Scenario& s) { return formatReal(static_cast<Real>(double(fieldOf(field, s)) / toSi)); };
   return k;
+}
+
+// A number kept in the units the file gives it.
+template <class F>
+KeySpec realKey(std::string name, F field, Range range, std::string unit, std::string doc) {
+  return clinicalKey(std::move(name), field, 1.0, range, std::move(unit), std::move(doc));
 }
 
 template <class F>
