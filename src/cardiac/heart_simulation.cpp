@@ -82,6 +82,8 @@ void HeartSimulation::buildLumpedCirculation() {
   m_cycle.emplace(cycle, model, m_firstWallParticle);
   m_regionShares = regionShares(*m_cycle, model, m_firstWallParticle);
   m_drivenWall.emplace(model, selectBeatingVertices(cycle, model), m_firstWallParticle, c.wallMotion);
+  // The driven wall is kinematic: its motion is the contraction's, not its constraints'.
+  for (Index v : m_drivenWall->drivenVertices()) m_particles.inverseMass[m_firstWallParticle + v] = 0;
 
   LumpedParameters p = c.lumpedParameters;
   constexpr double pi = std::numbers::pi;

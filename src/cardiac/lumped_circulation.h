@@ -50,7 +50,7 @@ struct LumpedParameters {
   double aorticRegurgitantArea = 0;
   double valveResistance = resistanceFromClinical(0.003);
   // Afterload: three-element Windkessel.
-  double characteristicImpedance = resistanceFromClinical(0.03);
+  double characteristicImpedance = resistanceFromClinical(0.05);
   double arterialCompliance = complianceFromClinical(1.4);
   double peripheralResistance = resistanceFromClinical(1.05);
   double systemicVenousPressure = 5 * kPascalPerMmHg;

@@ -6,81 +6,124 @@
 namespace hs::cardiac {
 namespace {
 
-// Share of the base's descent a vertex takes: from 0 at the epicardial apex to 1 at the base
-// plane (y = 0) along the myocardium; the base plate takes all of it; along a vessel it falls
-// back to 0 at the pinned far end (the vessel is stretched, not moved as a whole).
-double descentShare(const LvModel& model, Index v, double apexY, double plateTop, double vesselTop) {
-  const double y = model.mesh.vertices[v].y();
-  switch (model.region[v]) {
-    case Region::Myocardium: return std::clamp((y - apexY) / (0 - apexY), 0.0, 1.0);
-    case Region::BasePlate: return 1;
-    case Region::InflowVessel:
-    case Region::OutflowVessel:
-      return std::clamp(1 - (y - plateTop) / std::max(vesselTop - plateTop, 1e-12), 0.0, 1.0);
-  }
-  return 0;
-}
-
-// Toward the long axis (x = z = 0). A cavity-side vertex (even id) travels `radial` of its
-// distance r_i from the axis; its outer partner (id + 1) travels r_i / r_o as far, which keeps
-// the wall's cross-section r_o^2 - r_i^2 to first order: the wall thickens as it contracts.
-Vec3 radialDisplacement(const std::vector<Vec3>& x, Index v, Real radial) {
-  const Vec3 own(x[v].x(), 0, x[v].z());
-  if (v % 2 == 0) return -radial * own;
-  const Real inner = Vec3(x[v - 1].x(), 0, x[v - 1].z()).norm();
-  const Real outer = own.norm();
-  if (!(outer > Real(0))) return Vec3::Zero();
-  return Vec3(-radial * (inner * inner / (outer * outer)) * own);
+// Along a vessel the base's descent falls back to 0 at the pinned far end (the vessel is
+// stretched, not moved as a whole).
+Real vesselDescentShare(Real y, double plateTop, double vesselTop) {
+  return Real(std::clamp(1 - (double(y) - plateTop) / std::max(vesselTop - plateTop, 1e-12), 0.0, 1.0));
 }
 
 // The base ring is held by the fibrous base plate, which does not shorten: the radial motion
 // fades from the mid-ventricle (a third of the long axis below the base) to none at the base
 // plane, smoothly (s^2 (3 - 2 s)), so the plate's rim is not crushed.
-double radialTaper(double y, double endoLongAxis) {
-  const double s = std::clamp(-y / (endoLongAxis / 3), 0.0, 1.0);
-  return s * s * (3 - 2 * s);
+Real radialTaper(Real y, double endoLongAxis) {
+  const double s = std::clamp(-double(y) / (endoLongAxis / 3), 0.0, 1.0);
+  return Real(s * s * (3 - 2 * s));
 }
 
-// The shell is one tetrahedron thick: beyond this contraction (about half its radius inward at
-// 0.4 radial shortening) its tetrahedra invert. The cavity then stops short of the lumped
-// volume, which the run reports (cavity_volume_error_max), rather than breaking the wall.
-constexpr double kMaxContraction = 1.2;
+// The wall thickness h' that keeps the wall's volume inside an epicardium of radii (A, C):
+// A^2 C - (A - h)^2 (C - h) = W. The left side rises from 0 at h = 0 to A^2 C at h = min(A, C);
+// bisection, as it needs no derivative and cannot leave the bracket. Returns min(A, C) when
+// even a solid spheroid holds less than the wall (no cavity left).
+double thicknessKeepingVolume(double A, double C, double W) {
+  double low = 0, high = std::min(A, C);
+  if (A * A * C <= W) return high;
+  for (int i = 0; i < 60; ++i) {
+    const double h = 0.5 * (low + high);
+    (A * A * C - (A - h) * (A - h) * (C - h) < W ? low : high) = h;
+  }
+  return 0.5 * (low + high);
+}
+
+// The endocardium may shrink to this share of its rest radii; the tetrahedra at the apex
+// invert a little beyond it.
+constexpr double kSmallestEndocardium = 0.45;
 
 }  // namespace
 
 VolumeDrivenWall::VolumeDrivenWall(const LvModel& model, const std::vector<Index>& beating, Index firstParticle,
                                    const WallMotionSettings& settings)
-    : m_model(&model), m_firstParticle(firstParticle) {
+    : m_model(&model), m_firstParticle(firstParticle), m_settings(settings) {
   const auto& x = model.mesh.vertices;
   const std::size_t n = x.size();
-  std::vector<std::uint8_t> beats(n, 0);
+  const LvGeometryParams& g = model.params;
+  m_rest = {0, double(g.endoRadius), double(g.endoLongAxis), double(g.endoRadius + g.wallThickness),
+            double(model.longAxisLength)};
+  m_wallVolume = m_rest.epiRadius * m_rest.epiRadius * m_rest.epiLong - m_rest.endoRadius * m_rest.endoRadius * m_rest.endoLong;
+  std::vector<std::uint8_t> beats(n, 0), pinned(n, 0);
   for (Index v : beating) beats[v] = 1;
-  double apexY = 0, plateTop = 0, vesselTop = 0;
+  for (Index v : model.pinned) pinned[v] = 1;
+  double plateTop = 0, vesselTop = 0;
   for (std::size_t v = 0; v < n; ++v) {
-    apexY = std::min(apexY, double(x[v].y()));
     vesselTop = std::max(vesselTop, double(x[v].y()));
     if (model.region[v] == Region::BasePlate) plateTop = std::max(plateTop, double(x[v].y()));
   }
   m_beatingShare = myocardiumShare(model, beating);
   m_longitudinalTravel = double(settings.longitudinal) * double(model.longAxisLength) * m_beatingShare;
-  std::vector<std::uint8_t> pinned(n, 0);
-  for (Index v : model.pinned) pinned[v] = 1;
   for (std::size_t v = 0; v < n; ++v) {
     if (pinned[v]) continue;
-    const bool myocardium = model.region[v] == Region::Myocardium;
-    if (myocardium && !beats[v]) continue;  // an akinetic segment is carried, not driven
-    Vec3 d(0, Real(-m_longitudinalTravel * descentShare(model, Index(v), apexY, plateTop, vesselTop)), 0);
-    if (myocardium) d += Real(radialTaper(x[v].y(), double(model.params.endoLongAxis))) * radialDisplacement(x, Index(v), settings.radial);
-    if (d.squaredNorm() == 0) continue;
+    Driven d{Index(v), Kind::Base, 1};
+    switch (model.region[v]) {
+      case Region::Myocardium:
+        if (!beats[v]) continue;  // an akinetic segment is carried, not driven
+        d.kind = v % 2 == 0 ? Kind::Endocardium : Kind::Epicardium;
+        d.share = radialTaper(x[v].y(), m_rest.endoLong);
+        break;
+      case Region::BasePlate: break;
+      case Region::InflowVessel:
+      case Region::OutflowVessel:
+        d = {Index(v), Kind::Vessel, vesselDescentShare(x[v].y(), plateTop, vesselTop)};
+        if (d.share == 0) continue;
+        break;
+    }
     m_driven.push_back(Index(v));
-    m_displacement.push_back(d);
+    m_motion.push_back(d);
+  }
+  // The largest contraction: the endocardium no smaller than kSmallestEndocardium of rest.
+  for (m_maxContraction = 0; m_maxContraction < 3; m_maxContraction += 0.01) {
+    const Spheroids w = wallAt(m_maxContraction + 0.01);
+    if (w.endoRadius < kSmallestEndocardium * m_rest.endoRadius || w.endoLong < kSmallestEndocardium * m_rest.endoLong) break;
   }
   m_scratch = x;
 }
 
+VolumeDrivenWall::Spheroids VolumeDrivenWall::wallAt(double a) const {
+  Spheroids w;
+  w.descent = a * m_longitudinalTravel;
+  w.epiRadius = m_rest.epiRadius * (1 - a * double(m_settings.radial) * m_beatingShare);
+  w.epiLong = m_rest.epiLong - w.descent;
+  const double h = thicknessKeepingVolume(w.epiRadius, w.epiLong, m_wallVolume);
+  w.endoRadius = w.epiRadius - h;
+  w.endoLong = w.epiLong - h;
+  return w;
+}
+
+// A beating vertex keeps its place on its spheroid: x and z scale with the radius (less toward
+// the base), y with the long axis below the descended base plane.
+Vec3 VolumeDrivenWall::place(const Driven& d, const Spheroids& wall) const {
+  const Vec3& x = m_model->mesh.vertices[d.vertex];
+  const Real descent = Real(wall.descent);
+  switch (d.kind) {
+    case Kind::Base: return {x.x(), x.y() - descent, x.z()};
+    case Kind::Vessel: return {x.x(), x.y() - d.share * descent, x.z()};
+    case Kind::Endocardium:
+    case Kind::Epicardium: {
+      const bool endo = d.kind == Kind::Endocardium;
+      const double radius = endo ? wall.endoRadius / m_rest.endoRadius : wall.epiRadius / m_rest.epiRadius;
+      const double length = endo ? wall.endoLong / m_rest.endoLong : wall.epiLong / m_rest.epiLong;
+      const Real across = Real(1 - double(d.share) * (1 - radius));
+      return {x.x() * across, Real(-wall.descent + double(x.y()) * length), x.z() * across};
+    }
+  }
+  return x;
+}
+
+void VolumeDrivenWall::placeAll(double a, std::vector<Vec3>& out, Index offset) const {
+  const Spheroids wall = wallAt(a);
+  for (const Driven& d : m_motion) out[offset + d.vertex] = place(d, wall);
+}
+
 double VolumeDrivenWall::predictedVolume(double a) const {
-  const auto& rest = m_model->mesh.vertices;
-  for (std::size_t k = 0; k < m_driven.size(); ++k) m_scratch[m_driven[k]] = rest[m_driven[k]] + Real(a) * m_displacement[k];
+  placeAll(a, m_scratch, 0);
   return double(cavityVolume(*m_model, m_scratch));
 }
 
@@ -93,12 +136,12 @@ void VolumeDrivenWall::drive(const std::vector<Vec3>& positions, std::vector<Vec
   const double wanted = targetVolume - correction;
   // Newton on V_p(a) = wanted from the last contraction; V_p is smooth and falls with a.
   double a = m_contraction;
-  for (int iteration = 0; iteration < 4; ++iteration) {
+  for (int iteration = 0; iteration < 6; ++iteration) {
     const double h = 1e-4;
     const double v = predictedVolume(a);
     const double slope = (predictedVolume(a + h) - v) / h;
     if (!(slope < 0)) break;
-    const double next = std::clamp(a - (v - wanted) / slope, -kMaxContraction, kMaxContraction);
+    const double next = std::clamp(a - (v - wanted) / slope, -m_maxContraction, m_maxContraction);
     const bool converged = std::abs(next - a) < 1e-7;
     a = next;
     if (converged) break;
@@ -106,9 +149,7 @@ void VolumeDrivenWall::drive(const std::vector<Vec3>& positions, std::vector<Vec
   m_contraction = a;
   m_lastPredicted = predictedVolume(a);
   m_started = true;
-  const auto& rest = m_model->mesh.vertices;
-  for (std::size_t k = 0; k < m_driven.size(); ++k)
-    predicted[m_firstParticle + m_driven[k]] = rest[m_driven[k]] + Real(a) * m_displacement[k];
+  placeAll(a, predicted, m_firstParticle);
 }
 
 }  // namespace hs::cardiac

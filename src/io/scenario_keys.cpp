@@ -292,9 +292,9 @@ std::vector<KeySpec> lumpedCirculationKeys() {
               "The atrium contracts before each beat (the A wave); false: atrial fibrillation."),
       realKey("circulation.base_descent", HS_FIELD(circulation.wallMotion.longitudinal), between(0, 0.4), "",
               "Wall motion: the base's descent toward the apex at full contraction, share of the long axis."),
-      realKey("circulation.radial_shortening", HS_FIELD(circulation.wallMotion.radial), between(0, 0.6), "",
-              "Wall motion: a beating point's travel toward the long axis at full contraction, share of its "
-              "distance from it."),
+      realKey("circulation.radial_shortening", HS_FIELD(circulation.wallMotion.radial), between(0, 0.3), "",
+              "Wall motion: the epicardium's travel toward the long axis at full contraction, share of its "
+              "radius (the endocardium moves in as far as the incompressible wall thickens)."),
   };
 }
 
