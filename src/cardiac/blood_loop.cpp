@@ -5,19 +5,30 @@
 
 namespace hs::cardiac {
 
-BloodLoop::BloodLoop(const FlowPath& path, const BloodSettings& blood) : m_path(path), m_spacing(blood.spacing) {
+BloodLoop::BloodLoop(const FlowPath& path, const BloodSettings& blood, int inletLayers)
+    : m_path(path), m_spacing(blood.spacing), m_inletLayers(std::max(1, inletLayers)) {
   const Orifice& mitral = path.mitral;
-  // Re-entry sites: a square lattice of spacing d across the inflow lumen, half a spacing
-  // below its far end, at least a radius inside the lumen wall.
-  const Real y = path.inflowTop - Real(0.5) * m_spacing;
   const Real reach = mitral.radius - blood.radius;
-  const int n = int(std::floor(reach / m_spacing));
-  for (int i = -n; i <= n; ++i)
-    for (int k = -n; k <= n; ++k) {
-      const Vec3 site(mitral.centre.x() + Real(i) * m_spacing, y, mitral.centre.z() + Real(k) * m_spacing);
-      if (mitral.radial(site) <= reach) m_inletSites.push_back(site);
+  if (m_inletLayers == 1) {
+    // One square lattice of spacing d across the inflow lumen, half a spacing below its far
+    // end, at least a radius inside the lumen wall (the thesis-era circulation).
+    const Real y = path.inflowTop - Real(0.5) * m_spacing;
+    const int n = int(std::floor(reach / m_spacing));
+    for (int i = -n; i <= n; ++i)
+      for (int k = -n; k <= n; ++k) {
+        const Vec3 site(mitral.centre.x() + Real(i) * m_spacing, y, mitral.centre.z() + Real(k) * m_spacing);
+        if (mitral.radial(site) <= reach) m_inletSites.push_back(site);
+      }
+  } else {
+    // Layers a spacing apart below the far end, each at the blood's rest density
+    // (lumenDiscSites), alternate layers turned by half a site.
+    for (int layer = 0; layer < m_inletLayers; ++layer) {
+      const Real y = path.inflowTop - (Real(0.5) + Real(layer)) * m_spacing;
+      for (const Vec3& site : lumenDiscSites(mitral, y, reach, m_spacing, layer % 2 == 1)) m_inletSites.push_back(site);
     }
-  if (m_inletSites.empty()) m_inletSites.push_back(Vec3(mitral.centre.x(), y, mitral.centre.z()));
+  }
+  if (m_inletSites.empty())
+    m_inletSites.push_back(Vec3(mitral.centre.x(), path.inflowTop - Real(0.5) * m_spacing, mitral.centre.z()));
   // Parked particles wait above the vessels, between them, more than a kernel support apart
   // (so they are nobody's neighbours).
   m_parkingOrigin = Vec3(Real(0.5) * (mitral.centre.x() + path.aortic.centre.x()),
@@ -83,7 +94,7 @@ std::size_t BloodLoop::meterOutlet(pbd::Particles& particles, Index first) {
   m_underLid.clear();
   for (std::size_t i = first; i < particles.size(); ++i) {
     const Vec3& x = particles.position[i];
-    if (particles.active(i) && x.y() > m_path.outflowTop - 2 * m_spacing && aortic.radial(x) < aortic.radius + m_spacing)
+    if (particles.active(i) && x.y() > m_path.outflowTop - m_spacing && aortic.radial(x) < aortic.radius + m_spacing)
       m_underLid.push_back(Index(i));
   }
   std::sort(m_underLid.begin(), m_underLid.end(), [&](Index a, Index b) {
@@ -108,7 +119,7 @@ std::size_t BloodLoop::reenter(pbd::Particles& particles, Index first) {
   // Blood is created after the wall and only reordered among itself, so its ids are
   // [first, end) in some order.
   const Orifice& mitral = m_path.mitral;
-  const Real near = m_path.inflowTop - 2 * m_spacing;
+  const Real near = m_path.inflowTop - Real(m_inletLayers + 1) * m_spacing;
   const Index firstId = first;
   m_occupied.clear();
   m_parkedAt.assign(particles.size() - first, kFreeSlot);

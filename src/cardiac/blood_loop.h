@@ -18,7 +18,8 @@ using pbd::Index;
 
 class BloodLoop {
  public:
-  BloodLoop(const FlowPath& path, const BloodSettings& blood);
+  // `inletLayers`: layers of re-entry sites under the inflow vessel's far end, a spacing apart.
+  BloodLoop(const FlowPath& path, const BloodSettings& blood, int inletLayers = 1);
 
   // The last `count` of the blood particles [first, end) start outside the model, waiting.
   void startWaiting(pbd::Particles& particles, Index first, std::size_t count);
@@ -51,6 +52,7 @@ class BloodLoop {
 
   FlowPath m_path;
   Real m_spacing;
+  int m_inletLayers;
   static constexpr double kOutletCarryOver = 10;  // particles
   bool m_outletMetered = false;
   double m_outletAllowance = 0;  // particles

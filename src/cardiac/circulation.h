@@ -21,7 +21,9 @@ struct Circulation {
   Circulation(const LvModel& model, const Scenario& scenario)
       : valves(model.flowPath, scenario.circulation.valveMode, scenario.cycle.enabled, scenario.blood.radius),
         meter(model.flowPath, scenario.blood, scenario.circulation.atrialPressureMmHg * kPascalPerMmHg),
-        loop(model.flowPath, scenario.blood),
+        // The lumped atrium refills the inflow vessel as fast as the E wave drains it (up to
+        // 510 mL/s): three layers of re-entry sites rather than one.
+        loop(model.flowPath, scenario.blood, scenario.circulation.lumped ? 3 : 1),
         filling(model.flowPath, scenario.blood, scenario.circulation.atrialPressureMmHg),
         settings(scenario.circulation) {}
 

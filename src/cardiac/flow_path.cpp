@@ -1,6 +1,8 @@
 #include "cardiac/flow_path.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 namespace hs::cardiac {
 
@@ -19,6 +21,22 @@ FlowRegion FlowPath::classify(const Vec3& x, Real lumenSlack, Real endSlack) con
   const Real e = (q.x() * q.x() + q.z() * q.z()) / (midWallRadius * midWallRadius) +
                  (q.y() * q.y()) / (midWallLongAxis * midWallLongAxis);
   return e <= Real(1) ? FlowRegion::Ventricle : FlowRegion::Outside;
+}
+
+std::vector<Vec3> lumenDiscSites(const Orifice& lumen, Real y, Real reach, Real spacing, bool turned) {
+  const Vec3 centre(lumen.centre.x(), y, lumen.centre.z());
+  std::vector<Vec3> sites{centre};
+  // Rings evenly out to `reach`, as many as fit about a spacing apart.
+  const int rings = reach > 0 ? std::max(1, int(std::lround(reach / spacing))) : 0;
+  for (int k = 1; k <= rings; ++k) {
+    const Real radius = reach * Real(k) / Real(rings);
+    const int count = std::max(1, int(std::lround(2 * std::numbers::pi_v<Real> * radius / spacing)));
+    for (int j = 0; j < count; ++j) {
+      const Real angle = 2 * std::numbers::pi_v<Real> * (Real(j) + (turned ? Real(0.5) : Real(0))) / Real(count);
+      sites.push_back(centre + radius * Vec3(std::cos(angle), 0, std::sin(angle)));
+    }
+  }
+  return sites;
 }
 
 }  // namespace hs::cardiac

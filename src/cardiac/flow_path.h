@@ -3,6 +3,7 @@
 // ventricle -> aortic orifice -> outflow vessel. Part of the LV model (LvModel::flowPath),
 // found once on its rest shape; the one place that says which region a point is in.
 #include <cstdint>
+#include <vector>
 
 #include "pbd/types.h"
 
@@ -53,5 +54,12 @@ struct FlowPath {
     return x.y() > outflowTop && aortic.radial(x) < aortic.radius + slack;
   }
 };
+
+// Sites across a vertical vessel's lumen at height y, about a spacing d apart: the axis, then
+// rings evenly out to `reach` (the lumen radius less a particle radius), as many as fit about a
+// spacing apart, each with sites a spacing apart; `turned` turns every ring by half a site (alternate layers). One site
+// per d^2 of the lumen: the blood's rest density, which a square lattice inside the wall
+// reaches only to about 55%.
+std::vector<Vec3> lumenDiscSites(const Orifice& lumen, Real y, Real reach, Real spacing, bool turned);
 
 }  // namespace hs::cardiac

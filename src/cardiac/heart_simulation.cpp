@@ -136,7 +136,7 @@ void HeartSimulation::buildBlood() {
     for (std::size_t v = 0; v < wetted.size(); v += 2) wetted[v] = 1;
     m_wallContact->setWettedVertices(wetted);
     m_circulation.emplace(*m_model, m_scenario);
-    m_vesselCapacity = vesselCapacity(m_scenario, *m_model);
+    m_vesselSites = vesselSites(m_scenario, *m_model);
     if (m_lumped) m_circulation->valves.closeOutlet(m_circulation->loop.outletLid());
     if (m_lumped && m_scenario.circulation.aorticValveArea > 0)
       m_circulation->valves.narrowAorticOpening(std::sqrt(m_scenario.circulation.aorticValveArea / std::numbers::pi_v<Real>));
@@ -198,7 +198,9 @@ void HeartSimulation::beginStep(const pbd::StepContext& context) {
   if (!m_circulation) return;
   if (m_lumped) {
     const CirculationSample& lumped = m_lumped->last();
-    // A regurgitant valve lets blood back in 3D as in the lumped model.
+    // A regurgitant valve lets blood back in 3D as in the lumped model; the aorta takes the
+    // blood the ventricle pushes past the outflow vessel's end while the lumped aortic flow is
+    // forward (the wall moves the lumped volume, so that is the lumped stroke volume).
     m_circulation->valves.follow({lumped.mitralFlow != 0, lumped.aorticOpen || lumped.aorticFlow < 0});
     m_circulation->loop.allowOutflow(lumped.aorticFlow * double(context.dt), double(m_circulation->meter.particleVolume()));
     // The atrium drives the inflow vessel by its pressure over the ventricle's while the mitral
@@ -246,6 +248,7 @@ void HeartSimulation::solveBloodDensity(const pbd::StepContext& context) {
   }
   const pbd::ParticleTetSettings contact = wallContactSettings(context);
   m_fluid->beginDensitySolve(m_particles, context);
+  if (m_scenario.blood.wallDensity) lendWallDensity(context);
   for (int iteration = 0; iteration < m_fluid->iterations(); ++iteration) {
     m_fluid->iterateDensity(context);
     std::vector<Vec3>& points = m_fluid->workingPositions();
@@ -253,6 +256,13 @@ void HeartSimulation::solveBloodDensity(const pbd::StepContext& context) {
     m_wallContact->resolvePoints(m_particles, points, m_fluid->slotParticles(), contact);
   }
   m_fluid->endDensitySolve(m_particles, context);
+}
+
+// The wall's surface where it is about to be (its predictions) lends density to the blood
+// beside it for this step's iterations.
+void HeartSimulation::lendWallDensity(const pbd::StepContext& context) {
+  // Model vertex v is particle m_firstWallParticle + v = v (the wall is the first body).
+  m_fluid->lendWallDensity(m_particles.predicted, m_model->surface, context.threads);
 }
 
 // After the wall's constraints have moved it: the valves and the wall once more on the blood's
@@ -275,12 +285,14 @@ void HeartSimulation::endStep(const pbd::StepContext&) {
 
 double HeartSimulation::vesselFill() const {
   if (!m_circulation) return 1;
-  const FlowStep& last = m_circulation->meter.lastStep();
-  auto share = [](std::size_t count, std::size_t capacity) {
-    return capacity > 0 ? std::min(1.0, double(count) / double(capacity)) : 1.0;
-  };
-  return std::min(share(last.count[std::size_t(FlowRegion::InflowVessel)], m_vesselCapacity.inflow),
-                  share(last.count[std::size_t(FlowRegion::OutflowVessel)], m_vesselCapacity.outflow));
+  const Real d = m_scenario.blood.spacing;
+  Real lowest = std::numeric_limits<Real>::max();
+  for (const auto* sites : {&m_vesselSites.inflow, &m_vesselSites.outflow})
+    for (const Vec3& x : *sites) lowest = std::min(lowest, x.y());
+  std::vector<Vec3> blood;
+  for (std::size_t i = m_firstBloodParticle; i < m_particles.size(); ++i)
+    if (m_particles.active(i) && m_particles.position[i].y() >= lowest - d) blood.push_back(m_particles.position[i]);
+  return std::min(vesselFillShare(m_vesselSites.inflow, blood, d), vesselFillShare(m_vesselSites.outflow, blood, d));
 }
 
 const std::vector<Real>& HeartSimulation::pressures() const {

@@ -66,7 +66,8 @@ class HeartSimulation {
   [[nodiscard]] const LumpedCirculation* lumped() const { return m_lumped ? &*m_lumped : nullptr; }
   [[nodiscard]] const VolumeDrivenWall* drivenWall() const { return m_drivenWall ? &*m_drivenWall : nullptr; }
   // Heart and blood: the smallest share of the two vessels' lumens holding blood after the last
-  // step (particles in each against vesselCapacity(), at most 1).
+  // step: of each vessel's rest-density sites (vesselSites), the share with blood within a
+  // spacing (vesselFillShare).
   [[nodiscard]] double vesselFill() const;
   // Pressure (Pa) of each particle from the last density solve (0 for the wall), see
   // pbd::FluidSolver::pressures(); empty without blood.
@@ -100,6 +101,7 @@ class HeartSimulation {
   void applyExternalForces(const pbd::StepContext& context);
   void moveWall(const pbd::StepContext& context);
   void solveBloodDensity(const pbd::StepContext& context);
+  void lendWallDensity(const pbd::StepContext& context);
   void resolveBloodContacts(const pbd::StepContext& context);
   void endStep(const pbd::StepContext& context);
 
@@ -122,7 +124,7 @@ class HeartSimulation {
   std::optional<VolumeDrivenWall> m_drivenWall;             // circulation.lumped
   std::vector<double> m_regionShares;                       // circulation.lumped: per beating region
   BeatTiming m_beatTiming;                                  // circulation.lumped
-  VesselCapacity m_vesselCapacity;                          // heart and blood
+  VesselSites m_vesselSites;                                // heart and blood
   Vec3 m_domainMin = Vec3::Zero(), m_domainMax = Vec3::Zero();  // outside: blood is lost
   std::vector<FlowRegion> m_bloodOrigin;  // per blood particle id - firstBloodParticle
   std::vector<Real> m_restVolume;  // per model tet

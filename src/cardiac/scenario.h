@@ -95,6 +95,10 @@ struct BloodSettings {
   // Thesis eq. 4.6 between blood particles. Off by default: with 2 radii = spacing it fights the
   // density constraint (fluid-at-rest: density error 3.6% with it, 0.27% without).
   bool particleCollision = false;
+  // The heart wall lends density to the blood beside it (pbd/wall_density.h): without it blood
+  // packs about a fifth tighter along walls than inside, so a contracting cavity holds more
+  // particles per volume at end-systole than at end-diastole.
+  bool wallDensity = false;
   bool tensileCorrection = false;   // PBF s_corr (eq. 13-14)
   Real tensileK = Real(0.1);
   int tensileN = 4;

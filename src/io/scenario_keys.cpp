@@ -199,6 +199,8 @@ std::vector<KeySpec> bloodKeys() {
               "Constraint-force mixing eps of PBF eq. 11, relative to a particle at rest."),
       boolKey("blood.particle_collision", HS_FIELD(blood.particleCollision),
               "Particles keep 2 radii apart (thesis eq. 4.6)."),
+      boolKey("blood.wall_density", HS_FIELD(blood.wallDensity),
+              "The heart wall lends density to the blood beside it, so blood does not pack tighter along walls."),
       boolKey("blood.tensile_correction", HS_FIELD(blood.tensileCorrection),
               "Artificial pressure s_corr against clumping (PBF eq. 13)."),
       realKey("blood.tensile_k", HS_FIELD(blood.tensileK), between(0, 1), "",

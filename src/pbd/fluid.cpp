@@ -122,7 +122,8 @@ void computeDensityConstraints(const std::vector<Real>& densities, std::span<con
 void computeLambdas(const std::vector<Vec3>& positions, const NeighbourLists& lists,
                     std::span<const Index> subset, const SphKernels& kernels,
                     const FluidSettings& settings, std::vector<Real>& densities,
-                    std::vector<Real>& lambdas, int threads, std::vector<Real>* pairGradients) {
+                    std::vector<Real>& lambdas, int threads, std::vector<Real>* pairGradients,
+                    const WallDensityInput* walls) {
   checkInputs(positions, lists, kernels, settings);
   if (pairGradients) pairGradients->resize(lists.indices.size());
   Real* const pairOut = pairGradients ? pairGradients->data() : nullptr;
@@ -150,7 +151,15 @@ void computeLambdas(const std::vector<Vec3>& positions, const NeighbourLists& li
       gradI += g;
       sumSqJ += g.squaredNorm();
     });
-    const Real rho = m * kernelSum;
+    Real rho = m * kernelSum;
+    if (walls) {
+      const Real d = wallDistance(*walls, i, positions[i]);
+      if (d >= Real(0)) {
+        const Vec3& n = (*walls->proximity)[i].normal;
+        rho += settings.restDensity * walls->table->density(d);
+        gradI -= walls->table->gradient(d) * n;
+      }
+    }
     densities[i] = rho;
     const Real c = rho * invRho0 - Real(1);  // PBF eq. 1
     // PBF eq. 11: lambda_i = -C_i / (sum_k |grad_{p_k} C_i|^2 + eps).
@@ -163,7 +172,7 @@ void computeDensityCorrections(const std::vector<Vec3>& positions, const Neighbo
                                std::span<const Index> subset, const SphKernels& kernels,
                                const FluidSettings& settings, const std::vector<Real>& lambdas,
                                std::vector<Vec3>& corrections, int threads,
-                               const std::vector<Real>* pairGradients) {
+                               const std::vector<Real>* pairGradients, const WallDensityInput* walls) {
   checkInputs(positions, lists, kernels, settings);
   assert(!pairGradients || pairGradients->size() == lists.indices.size());
   const Real* const pairIn = pairGradients ? pairGradients->data() : nullptr;
@@ -197,6 +206,10 @@ void computeDensityCorrections(const std::vector<Vec3>& positions, const Neighbo
       }
     });
     corrections[i] = scale * sum + push;
+    if (walls) {
+      const Real d = wallDistance(*walls, i, positions[i]);
+      if (d >= Real(0)) corrections[i] -= (2 * li * walls->table->gradient(d)) * (*walls->proximity)[i].normal;
+    }
   }
 }
 

@@ -32,6 +32,7 @@
 
 #include "pbd/neighbour_grid.h"
 #include "pbd/sph_kernels.h"
+#include "pbd/wall_density.h"
 #include "pbd/types.h"
 
 namespace hs::pbd {
@@ -102,12 +103,13 @@ void computeDensities(const std::vector<Vec3>& positions, const NeighbourLists& 
 // settings.unilateralDensity, lambda_i = min(lambda_i, 0). With pairGradients, the scalar
 // s_ij of grad W(p_i - p_j) = s_ij (p_i - p_j) is stored per list entry, for
 // computeDensityCorrections at the same positions (it then skips the square root and the
-// division per pair, half of its cost).
+// division per pair, half of its cost). With walls, a particle with a wall within its support
+// adds the wall's share (wall_density.h): rho_i += rho0 D(d), grad_{p_i} C_i += -G(d) n.
 void computeLambdas(const std::vector<Vec3>& positions, const NeighbourLists& lists,
                     std::span<const Index> subset, const SphKernels& kernels,
                     const FluidSettings& settings, std::vector<Real>& densities,
                     std::vector<Real>& lambdas, int threads = 1,
-                    std::vector<Real>* pairGradients = nullptr);
+                    std::vector<Real>* pairGradients = nullptr, const WallDensityInput* walls = nullptr);
 
 // C_i = rho_i/rho0 - 1 (PBF eq. 1) for the particles of subset (diagnostics and tests).
 void computeDensityConstraints(const std::vector<Real>& densities, std::span<const Index> subset,
@@ -117,12 +119,14 @@ void computeDensityConstraints(const std::vector<Real>& densities, std::span<con
 // dp_i = (m/rho0) sum_j (lambda_i + lambda_j + s_corr) grad W_spiky(p_i - p_j) (PBF eq. 12,
 // thesis eq. 4.10), s_corr = -k (W_poly6(|p_i - p_j|)/W_poly6(deltaQ))^n when enabled (eq. 13),
 // plus sum_j (1/2)(2r - |p_ij|) p_ij/|p_ij| over pairs closer than 2r (thesis eq. 4.6, equal
-// masses) when settings.collisionRadius = r > 0.
+// masses) when settings.collisionRadius = r > 0. With walls, the wall's share of grad_{p_i} C_i
+// adds lambda_i (-G(d) n): a compressed particle is pushed off the wall (the wall does not move).
 void computeDensityCorrections(const std::vector<Vec3>& positions, const NeighbourLists& lists,
                                std::span<const Index> subset, const SphKernels& kernels,
                                const FluidSettings& settings, const std::vector<Real>& lambdas,
                                std::vector<Vec3>& corrections, int threads = 1,
-                               const std::vector<Real>* pairGradients = nullptr);
+                               const std::vector<Real>* pairGradients = nullptr,
+                               const WallDensityInput* walls = nullptr);
 
 // Viscosity in the velocity post-process (thesis Algorithm 1 line 15), one neighbour loop:
 //   v_i^new = v_i + c sum_j (v_j - v_i) W_poly6(|x_ij|, h)                         (XSPH)

@@ -23,11 +23,14 @@ NeighbourGridSettings gridSettingsFor(int threads) {
 }  // namespace
 
 FluidSolver::FluidSolver(FluidStepSettings settings)
-    : m_settings(std::move(settings)), m_kernels(makeSphKernels(m_settings.fluid.supportRadius)) {}
+    : m_settings(std::move(settings)),
+      m_kernels(makeSphKernels(m_settings.fluid.supportRadius)),
+      m_wallTable(m_kernels) {}
 
 void FluidSolver::setSettings(const FluidStepSettings& settings) {
   m_settings = settings;
   m_kernels = makeSphKernels(m_settings.fluid.supportRadius);
+  m_wallTable = WallDensityTable(m_kernels);
 }
 
 void FluidSolver::updateFluidIndices(const Particles& particles) {
@@ -105,8 +108,10 @@ void FluidSolver::iterateDensity(const StepContext& context) {
   const std::span<const Index> all(m_slots);
   // Lines 9-11: rho_i (PBF eq. 2) and lambda_i (eq. 11); lines 12-15: dp_i (eq. 12) and the
   // particle collisions (thesis eq. 4.6).
-  computeLambdas(m_p, m_lists, all, m_kernels, fluid, m_density, m_lambda, threads, &m_pairGradient);
-  computeDensityCorrections(m_p, m_lists, all, m_kernels, fluid, m_lambda, m_dp, threads, &m_pairGradient);
+  const WallDensityInput wallInput{&m_wallTable, &m_wallProximity, &m_wallStart};
+  const WallDensityInput* const lending = m_wallsLend ? &wallInput : nullptr;
+  computeLambdas(m_p, m_lists, all, m_kernels, fluid, m_density, m_lambda, threads, &m_pairGradient, lending);
+  computeDensityCorrections(m_p, m_lists, all, m_kernels, fluid, m_lambda, m_dp, threads, &m_pairGradient, lending);
   // Lines 16-18: p_i <- p_i + dp_i (Jacobi: all dp from the same p), then collision
   // response against the walls, C = n.p - (d + r) >= 0 (thesis eq. 4.5).
 #pragma omp parallel for schedule(static) num_threads(threads) if (std::size_t(n) >= kParallelThreshold)
@@ -123,7 +128,15 @@ void FluidSolver::iterateDensity(const StepContext& context) {
   }
 }
 
+void FluidSolver::lendWallDensity(const std::vector<Vec3>& wallVertices, const std::vector<Triangle>& wallTriangles,
+                                  int threads) {
+  findNearestWalls(wallVertices, wallTriangles, m_p, m_kernels.h, m_wallProximity, threads);
+  m_wallStart = m_p;
+  m_wallsLend = true;
+}
+
 void FluidSolver::endDensitySolve(Particles& particles, const StepContext& context) {
+  m_wallsLend = false;
   // Pressure (see pressures() in the header): p_i = -(rho0 / dt^2) sum over iterations of lambda_i.
   m_pressure.assign(particles.size(), Real(0));
   const Real pressureScale = -m_settings.fluid.restDensity / (context.dt * context.dt);

@@ -71,6 +71,9 @@ class FluidSolver {
   void beginDensitySolve(const Particles& particles, const StepContext& context);
   void iterateDensity(const StepContext& context);
   [[nodiscard]] std::vector<Vec3>& workingPositions() { return m_p; }
+  // Walls lend density to the fluid beside them (wall_density.h) for the rest of this solve:
+  // each working position's nearest wall within the support is found now, and kept as a plane.
+  void lendWallDensity(const std::vector<Vec3>& wallVertices, const std::vector<Triangle>& wallTriangles, int threads);
   void endDensitySolve(Particles& particles, const StepContext& context);
   void projectDensity(Particles& particles, const StepContext& context);
   void postProcessVelocities(Particles& particles, const StepContext& context);
@@ -129,6 +132,10 @@ class FluidSolver {
   std::vector<Vec3> m_v;           // slot velocities (viscosity input)
   std::vector<Vec3> m_vNew;        // viscosity output
   std::vector<Vec3> m_vorticity;   // vorticity confinement work array
+  WallDensityTable m_wallTable;    // for the kernels' support
+  std::vector<WallProximity> m_wallProximity;  // slot: nearest wall, during a solve that lends
+  std::vector<Vec3> m_wallStart;   // slot: where it was found
+  bool m_wallsLend = false;
 };
 
 }  // namespace hs::pbd
