@@ -134,37 +134,49 @@ TEST(FindNearestWalls, NoTrianglesMeansNoWall) {
   EXPECT_EQ(found[0].normal, Vec3::Zero());
 }
 
+// Particles `x` of the real-size blood (spacing 3.6 mm, h = 2 d) on a floor z = 0: the solver's
+// inputs and each particle's nearest wall.
+struct OnAFloor {
+  static constexpr Real d = Real(0.0036), h = 2 * d, rho0 = 1060;
+  std::vector<Vec3> x;
+  FluidSettings settings;
+  SphKernels kernels = makeSphKernels(h);
+  NeighbourLists lists;
+  std::vector<Index> all;
+  WallDensityTable table{kernels};
+  std::vector<WallProximity> proximity;
+  WallDensityInput walls;
+
+  explicit OnAFloor(std::vector<Vec3> particles) : x(std::move(particles)) {
+    settings.restDensity = rho0;
+    settings.particleMass = particleMassFor(rho0, d);
+    settings.supportRadius = h;
+    NeighbourGrid grid;
+    grid.build(x, h);
+    grid.buildNeighbourLists(x, h, lists);
+    all.resize(x.size());
+    std::iota(all.begin(), all.end(), Index(0));
+    const std::vector<Vec3> floor{Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0)};
+    const std::vector<Triangle> faces{{0, 1, 2}, {0, 2, 3}};
+    findNearestWalls(floor, faces, x, h, proximity, 1);
+    walls = {&table, &proximity, &x};
+  }
+};
+
 // A rest lattice on a floor (its first layer half a spacing above z = 0): without the wall the
 // first layers read under-dense; with it, at rest density, so the unilateral constraint holds
 // them as firmly as the interior.
 TEST(WallDensity, RestLatticeOnAFloorReadsAtRestDensity) {
-  const Real d = Real(0.0036), h = 2 * d, rho0 = 1060;
-  std::vector<Vec3> x;
+  const Real d = OnAFloor::d;
+  std::vector<Vec3> lattice;
   const int n = 12, layers = 6;
   for (int k = 0; k < layers; ++k)
     for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) x.push_back(d * Vec3(Real(i), Real(j), Real(k) + Real(0.5)));
-  const Real big = Real(1);
-  const std::vector<Vec3> floor{Vec3(-big, -big, 0), Vec3(big, -big, 0), Vec3(big, big, 0), Vec3(-big, big, 0)};
-  const std::vector<Triangle> faces{{0, 1, 2}, {0, 2, 3}};
-  FluidSettings s;
-  s.restDensity = rho0;
-  s.particleMass = particleMassFor(rho0, d);
-  s.supportRadius = h;
-  const SphKernels kernels = makeSphKernels(h);
-  NeighbourGrid grid;
-  grid.build(x, h);
-  NeighbourLists lists;
-  grid.buildNeighbourLists(x, h, lists);
-  std::vector<Index> all(x.size());
-  std::iota(all.begin(), all.end(), Index(0));
-  const WallDensityTable table(kernels);
-  std::vector<WallProximity> proximity;
-  findNearestWalls(floor, faces, x, h, proximity, 1);
-  const WallDensityInput walls{&table, &proximity, &x};
+      for (int i = 0; i < n; ++i) lattice.push_back(d * Vec3(Real(i), Real(j), Real(k) + Real(0.5)));
+  const OnAFloor f(lattice);
   std::vector<Real> bare, lent, lambda;
-  computeLambdas(x, lists, all, kernels, s, bare, lambda, 1);
-  computeLambdas(x, lists, all, kernels, s, lent, lambda, 1, nullptr, &walls);
+  computeLambdas(f.x, f.lists, f.all, f.kernels, f.settings, bare, lambda, 1);
+  computeLambdas(f.x, f.lists, f.all, f.kernels, f.settings, lent, lambda, 1, nullptr, &f.walls);
   // A column in the middle, away from the lattice's sides: its bottom particle and the one
   // above it.
   const Index bottom = Index((0 * n + n / 2) * n + n / 2), second = Index((1 * n + n / 2) * n + n / 2);
@@ -179,34 +191,19 @@ TEST(WallDensity, RestLatticeOnAFloorReadsAtRestDensity) {
 // same solve without the wall, the bottom particle of a compressed slab reads denser and is
 // moved up (its neighbours above still push it down; the wall contact keeps it out).
 TEST(WallDensity, CompressedParticleAtAWallIsPushedOff) {
-  const Real d = Real(0.0036), h = 2 * d, rho0 = 1060;
-  std::vector<Vec3> x;
+  const Real d = OnAFloor::d;
+  std::vector<Vec3> slab;
   for (int j = -2; j <= 2; ++j)
     for (int i = -2; i <= 2; ++i)
-      for (int k = 0; k < 3; ++k) x.push_back(Real(0.8) * d * Vec3(Real(i), Real(j), Real(k) + Real(0.5)));
-  const std::vector<Vec3> floor{Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0)};
-  const std::vector<Triangle> faces{{0, 1, 2}, {0, 2, 3}};
-  FluidSettings s;
-  s.restDensity = rho0;
-  s.particleMass = particleMassFor(rho0, d);
-  s.supportRadius = h;
-  const SphKernels kernels = makeSphKernels(h);
-  NeighbourGrid grid;
-  grid.build(x, h);
-  NeighbourLists lists;
-  grid.buildNeighbourLists(x, h, lists);
-  std::vector<Index> all(x.size());
-  std::iota(all.begin(), all.end(), Index(0));
-  const WallDensityTable table(kernels);
-  std::vector<WallProximity> proximity;
-  findNearestWalls(floor, faces, x, h, proximity, 1);
-  const WallDensityInput walls{&table, &proximity, &x};
+      for (int k = 0; k < 3; ++k) slab.push_back(Real(0.8) * d * Vec3(Real(i), Real(j), Real(k) + Real(0.5)));
+  const OnAFloor f(slab);
+  const std::vector<Vec3>& x = f.x;
   std::vector<Real> rho, lambda, rhoBare, lambdaBare;
   std::vector<Vec3> dp, dpBare;
-  computeLambdas(x, lists, all, kernels, s, rho, lambda, 1, nullptr, &walls);
-  computeDensityCorrections(x, lists, all, kernels, s, lambda, dp, 1, nullptr, &walls);
-  computeLambdas(x, lists, all, kernels, s, rhoBare, lambdaBare, 1);
-  computeDensityCorrections(x, lists, all, kernels, s, lambdaBare, dpBare, 1);
+  computeLambdas(x, f.lists, f.all, f.kernels, f.settings, rho, lambda, 1, nullptr, &f.walls);
+  computeDensityCorrections(x, f.lists, f.all, f.kernels, f.settings, lambda, dp, 1, nullptr, &f.walls);
+  computeLambdas(x, f.lists, f.all, f.kernels, f.settings, rhoBare, lambdaBare, 1);
+  computeDensityCorrections(x, f.lists, f.all, f.kernels, f.settings, lambdaBare, dpBare, 1);
   const Index centreBottom = Index(((2 * 5) + 2) * 3 + 0);
   ASSERT_NEAR(x[centreBottom].x(), 0, 1e-9);
   ASSERT_NEAR(x[centreBottom].y(), 0, 1e-9);
