@@ -262,7 +262,13 @@ void HeartSimulation::solveBloodDensity(const pbd::StepContext& context) {
 // beside it for this step's iterations.
 void HeartSimulation::lendWallDensity(const pbd::StepContext& context) {
   // Model vertex v is particle m_firstWallParticle + v = v (the wall is the first body).
-  m_fluid->lendWallDensity(m_particles.predicted, m_model->surface, context.threads);
+  if (m_lumenSurface.empty()) {
+    // The faces blood touches: cavity and vessel lumens, all of whose vertices are on the
+    // inner layer (even ids, lv_model.h).
+    for (const pbd::Triangle& t : m_model->surface)
+      if (t[0] % 2 == 0 && t[1] % 2 == 0 && t[2] % 2 == 0) m_lumenSurface.push_back(t);
+  }
+  m_fluid->lendWallDensity(m_particles.predicted, m_lumenSurface, context.threads);
 }
 
 // After the wall's constraints have moved it: the valves and the wall once more on the blood's

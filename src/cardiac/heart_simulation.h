@@ -125,6 +125,7 @@ class HeartSimulation {
   std::vector<double> m_regionShares;                       // circulation.lumped: per beating region
   BeatTiming m_beatTiming;                                  // circulation.lumped
   VesselSites m_vesselSites;                                // heart and blood
+  std::vector<pbd::Triangle> m_lumenSurface;                // blood.wall_density
   Vec3 m_domainMin = Vec3::Zero(), m_domainMax = Vec3::Zero();  // outside: blood is lost
   std::vector<FlowRegion> m_bloodOrigin;  // per blood particle id - firstBloodParticle
   std::vector<Real> m_restVolume;  // per model tet

@@ -79,7 +79,7 @@ WallProximity nearestOf(const std::vector<Vec3>& x, const std::vector<Triangle>&
 
 // Triangles binned by the cells their bounding boxes touch (cell edge `cell`).
 struct TriangleBins {
-  Vec3 lo;
+  Vec3 lo, hi;  // the triangles' bounding box
   Real cell;
   std::array<int, 3> dims{};
   std::vector<std::size_t> start;  // per cell, offsets into ids (one more than cells)
@@ -106,6 +106,7 @@ TriangleBins binTriangles(const std::vector<Vec3>& x, const std::vector<Triangle
       hi = hi.cwiseMax(x[v]);
     }
   bins.lo = lo;
+  bins.hi = hi;
   for (int a = 0; a < 3; ++a) bins.dims[a] = std::max(1, int(std::ceil((hi[a] - lo[a]) / cell)) + 1);
   const std::size_t cells = std::size_t(bins.dims[0]) * std::size_t(bins.dims[1]) * std::size_t(bins.dims[2]);
   // Two passes: count, then fill (counting sort), each triangle in every cell its box touches.
@@ -144,6 +145,8 @@ void findNearestWalls(const std::vector<Vec3>& vertices, const std::vector<Trian
     for (std::ptrdiff_t i = 0; i < n; ++i) {
       const Vec3& p = points[std::size_t(i)];
       if (!p.allFinite()) continue;
+      // Farther than reach from every triangle's box (blood parked away from the walls).
+      if ((p - p.cwiseMax(bins.lo).cwiseMin(bins.hi)).squaredNorm() > reach * reach) continue;
       // p's own cell first (its nearest triangle is likely there, and then the boxes of most
       // others are farther), then the cells of the box p +- reach; repeats are harmless.
       const auto own = bins.cellOf(p);
