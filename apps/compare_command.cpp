@@ -33,7 +33,7 @@ std::optional<ComparedRun> runOne(const std::string& source, double duration, in
   if (!scenario) return std::nullopt;
   if (!scenario->circulation.lumped) {
     std::cerr << "heartsim: error: compare: " << source << " has no lumped circulation (circulation.lumped = false); "
-              << "expected a scenario such as normal-lumped or a pathology preset\n";
+              << "expected a scenario such as normal or a pathology preset\n";
     return std::nullopt;
   }
   scenario->simulation.duration = static_cast<pbd::Real>(duration);

@@ -1,7 +1,7 @@
 #pragma once
 // `heartsim compare A B`: two scenarios with the lumped circulation run one after the other,
 // and their last complete beats drawn as two loops on one pressure-volume plot
-// (pv_compare.png), e.g. `heartsim compare normal-lumped dilated-cardiomyopathy`.
+// (pv_compare.png), e.g. `heartsim compare normal dilated-cardiomyopathy`.
 #include <string>
 #include <vector>
 

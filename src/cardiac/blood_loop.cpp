@@ -88,7 +88,8 @@ Orifice BloodLoop::outletLid() const {
   return lid;
 }
 
-// Parks the blood just under the outlet's lid, highest first, as far as the allowance goes.
+// Parks the blood pressed against the outlet's lid (within a spacing under it), highest first,
+// as far as the allowance goes.
 std::size_t BloodLoop::meterOutlet(pbd::Particles& particles, Index first) {
   const Orifice& aortic = m_path.aortic;
   m_underLid.clear();

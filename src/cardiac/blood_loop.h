@@ -36,7 +36,8 @@ class BloodLoop {
   // The outflow vessel's far end as the aorta's boundary (lumped circulation): a closed lid
   // (Valves::closeOutlet) under which blood leaves only as the lumped aortic flow carries it
   // away. Each step adds that flow's volume (m^3) to an allowance counted in particles; the
-  // particles within two spacings under the lid are parked, highest first, while it holds one.
+  // particles pressed against the lid (within a spacing under it) are parked, highest first,
+  // while it holds one.
   // So the vessel does not drain when the valve shuts or the column runs on. Unused allowance
   // carries over a few particles only. Without a call the end is open.
   void allowOutflow(double volume, double particleVolume);

@@ -49,6 +49,9 @@ class FlowMeter {
   // Volumes through the two orifices in the step just measured (m^3).
   [[nodiscard]] ValveFlows lastStepFlows() const;
   [[nodiscard]] Real particleVolume() const { return m_particleVolume; }
+  // Measure at the orifices where they are now (a descending base carries them); call before
+  // begin(): a step's crossings are counted against one plane.
+  void follow(const FlowPath& path) { m_path = path; }
 
  private:
   FlowPath m_path;

@@ -45,6 +45,15 @@ struct FlowPath {
   // ventricle: inside the mid-wall spheroid, continued as a cylinder up to the base plate's
   // middle. Anything else (a particle that went through the wall) is Outside; never Parked.
   [[nodiscard]] FlowRegion classify(const Vec3& x, Real lumenSlack, Real endSlack) const;
+  // The path with the base plate (and both orifices in it) moved `descent` toward the apex,
+  // as the lumped circulation's wall moves it (volume_driven_wall.h); the vessels' far ends
+  // are pinned and stay.
+  [[nodiscard]] FlowPath descended(Real descent) const {
+    FlowPath moved = *this;
+    moved.mitral.centre.y() -= descent;
+    moved.aortic.centre.y() -= descent;
+    return moved;
+  }
   // Past the far end of the inflow (or outflow) vessel, within `slack` of its lumen's axis
   // cylinder: blood that has left the model there.
   [[nodiscard]] bool pastInflowEnd(const Vec3& x, Real slack) const {

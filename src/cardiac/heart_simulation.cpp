@@ -198,11 +198,22 @@ void HeartSimulation::beginStep(const pbd::StepContext& context) {
   if (!m_circulation) return;
   if (m_lumped) {
     const CirculationSample& lumped = m_lumped->last();
+    // The valves and the flow meter sit in the orifices where the base has carried them.
+    const double descent = m_drivenWall->baseDescent(m_drivenWall->contraction());
+    const FlowPath moved = m_model->flowPath.descended(Real(descent));
+    m_circulation->valves.follow(moved);
+    m_circulation->meter.follow(moved);
+    // The aorta takes the lumped aortic flow less what the outflow vessel's own lengthening
+    // holds (its root descends with the base, its far end is pinned): as the base rises in
+    // diastole the shortening vessel pushes that blood on into the aorta.
+    const double lengthening = (descent - m_lastBaseDescent) * double(moved.aortic.radius * moved.aortic.radius) * std::numbers::pi;
+    m_lastBaseDescent = descent;
     // A regurgitant valve lets blood back in 3D as in the lumped model; the aorta takes the
     // blood the ventricle pushes past the outflow vessel's end while the lumped aortic flow is
     // forward (the wall moves the lumped volume, so that is the lumped stroke volume).
     m_circulation->valves.follow({lumped.mitralFlow != 0, lumped.aorticOpen || lumped.aorticFlow < 0});
-    m_circulation->loop.allowOutflow(lumped.aorticFlow * double(context.dt), double(m_circulation->meter.particleVolume()));
+    m_circulation->loop.allowOutflow(lumped.aorticFlow * double(context.dt) - lengthening,
+                                     double(m_circulation->meter.particleVolume()));
     // The atrium drives the inflow vessel by its pressure over the ventricle's while the mitral
     // valve is open; against the shut valve it would only squeeze the column.
     m_circulation->filling.setPressure(lumped.mitralOpen ? std::max(0.0, lumped.laPressure - lumped.lvPressure) : 0.0);

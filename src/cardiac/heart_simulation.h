@@ -126,6 +126,7 @@ class HeartSimulation {
   BeatTiming m_beatTiming;                                  // circulation.lumped
   VesselSites m_vesselSites;                                // heart and blood
   std::vector<pbd::Triangle> m_lumenSurface;                // blood.wall_density
+  double m_lastBaseDescent = 0;                             // m, circulation.lumped
   Vec3 m_domainMin = Vec3::Zero(), m_domainMax = Vec3::Zero();  // outside: blood is lost
   std::vector<FlowRegion> m_bloodOrigin;  // per blood particle id - firstBloodParticle
   std::vector<Real> m_restVolume;  // per model tet

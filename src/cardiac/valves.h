@@ -48,6 +48,11 @@ class Valves {
   void decide(Phase phase, const ValvePressures& lastStep);
   // The lumped circulation's valves (lumped_circulation.h) instead: open while blood flows forward.
   void follow(const ValveStates& states) { m_states = states; }
+  // The valves sit in the orifices where they are now (a descending base carries them).
+  void follow(const FlowPath& path) {
+    m_mitral = path.mitral;
+    m_aortic = path.aortic;
+  }
   // A lid over the outflow vessel's far end, always closed (blood_loop.h takes blood out
   // below it as the lumped aortic flow says).
   void closeOutlet(const Orifice& lid) { m_outletLid = lid; }

@@ -41,6 +41,19 @@ void addCirculationReport(nlohmann::ordered_json& heart, const cardiac::Circulat
   const std::optional<double> flowError = recorder.aorticFlowErrorMax();
   heart["aortic_flow_error_max"] = flowError ? nlohmann::ordered_json(*flowError) : nlohmann::ordered_json();
   heart["vessel_fill_min"] = recorder.vesselFillMin();
+  // Beat by beat, so a rhythm's differences show (irregular intervals, inconsistent pressures).
+  nlohmann::ordered_json beats = nlohmann::json::array();
+  for (const cardiac::CoupledBeat& b : recorder.beats()) {
+    beats.push_back({{"beat", b.index},
+                     {"start_s", b.startTime},
+                     {"duration_s", b.duration},
+                     {"complete", b.complete},
+                     {"aortic_systolic_mmhg", b.lumped.aorticSystolic / mmHg},
+                     {"aortic_diastolic_mmhg", b.lumped.aorticDiastolic / mmHg},
+                     {"lumped_stroke_volume_ml", b.lumped.forwardStrokeVolume * kClinical.volume},
+                     {"aortic_3d_ml", b.aorticNet3d * kClinical.volume}});
+  }
+  heart["lumped_beats"] = beats;
 }
 
 // The wall's part: mesh, volume errors, cavity and beats.

@@ -1,4 +1,4 @@
-// `heartsim run` with the lumped circulation (normal-lumped): a heart's pressures in mmHg, the
+// `heartsim run` with the lumped circulation (normal and its pathologies): a heart's pressures in mmHg, the
 // isovolumic phases, E and A waves, never both valves open, and the pressure-volume loop and Wiggers diagram beside metrics.csv;
 // physiological input it cannot take is refused before any work, with exit 2 and one line
 // naming the key and its accepted range.
@@ -41,7 +41,7 @@ TEST(CliLumped, BadPhysiologicalInputNamesTheKeyAndTheAcceptedRange) {
   const auto dir = scratchDir("lumped_bad_input");
   for (const BadInput& c : cases) {
     SCOPED_TRACE(c.set);
-    const CliResult r = runHeartsim("run normal-lumped --duration 0.01 --set " + c.set + " --out out", dir);
+    const CliResult r = runHeartsim("run normal --duration 0.01 --set " + c.set + " --out out", dir);
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_NE(r.err.find(c.key), std::string::npos) << r.err;
     EXPECT_NE(r.err.find(c.expected), std::string::npos) << r.err;
@@ -53,7 +53,7 @@ TEST(CliLumped, BadPhysiologicalInputNamesTheKeyAndTheAcceptedRange) {
 // first (docs/validation.md has the 10 s figures). The ranges are issue 13's for `normal`.
 TEST(CliLumped, NormalLumpedGivesAHeartsPressuresAndItsPlots) {
   const auto dir = scratchDir("lumped_normal");
-  const CliResult r = runHeartsim("run normal-lumped --duration 1.8 --threads 2 --json --out out", dir);
+  const CliResult r = runHeartsim("run normal --duration 1.8 --threads 2 --json --out out", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   const auto& h = j.at("heart");
@@ -91,7 +91,7 @@ TEST(CliLumped, NormalLumpedGivesAHeartsPressuresAndItsPlots) {
       EXPECT_GT(std::filesystem::file_size(path), 10000u) << png;
     }
   }
-  std::printf("normal-lumped: aortic %.0f/%.0f mmHg, LV peak %.0f, EDP %.1f, IVC %.0f ms, IVR %.0f ms, E/A %.2f, "
+  std::printf("normal: aortic %.0f/%.0f mmHg, LV peak %.0f, EDP %.1f, IVC %.0f ms, IVR %.0f ms, E/A %.2f, "
               "cavity error max %.3f, aortic flow error max %s, vessel fill min %.2f, lost %d\n",
               h.at("aortic_systolic_mmhg").get<double>(), h.at("aortic_diastolic_mmhg").get<double>(),
               h.at("lv_peak_mmhg").get<double>(), h.at("lv_end_diastolic_mmhg").get<double>(),
@@ -105,7 +105,7 @@ TEST(CliLumped, NormalLumpedGivesAHeartsPressuresAndItsPlots) {
 // The pathology presets against their textbook ranges (docs/physiology.md), on the beat after
 // the first (1.8 s at 72 bpm): the lumped model's figures (gradient, regurgitant fraction) and
 // the 3D heart's (EDV, EF, the jet through the 3D opening: severe stenosis's 4 m/s and more,
-// where normal-lumped's stays below 4 m/s).
+// where normal's stays below 4 m/s).
 struct Check {
   const char* key;
   double lo, hi;
@@ -139,12 +139,12 @@ TEST_P(PathologyPreset, ShowsItsTextbookSigns) {
 // refused with a line naming it.
 TEST(CliLumped, CompareDrawsTwoLoopsOnOnePlot) {
   const auto dir = scratchDir("lumped_compare");
-  const CliResult r = runHeartsim("compare normal-lumped dilated-cardiomyopathy --threads 2 --out out", dir);
+  const CliResult r = runHeartsim("compare normal dilated-cardiomyopathy --threads 2 --out out", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir / "out" / "pv_compare.png")) << r.err;
-  const CliResult bad = runHeartsim("compare normal normal-lumped --out bad", dir);
+  const CliResult bad = runHeartsim("compare heart-only normal --out bad", dir);
   EXPECT_EQ(bad.exitCode, 2) << bad.err;
-  EXPECT_NE(bad.err.find("normal has no lumped circulation"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("heart-only has no lumped circulation"), std::string::npos) << bad.err;
   EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
 }
 

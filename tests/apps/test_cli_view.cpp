@@ -182,8 +182,10 @@ TEST_F(ViewUnderXvfb, NormalScreenshotShowsHeartAndBlood) {
   const hs::viz::Image image = hs::viz::Image::loadPng((dir / "s.png").string());
   EXPECT_GT(variance(image), 200.0);
   EXPECT_GT(countPixels(image, wallRed), 1280 * 800 / 50);
-  // The panels' light-blue buttons alone are about 2% of the window.
-  EXPECT_GT(countPixels(image, bloodPalette), 1280 * 800 / 12);
+  // The panels' light-blue buttons alone are about 2% of the window; `normal` has the lumped
+  // circulation, whose pressure-volume strip takes the lower third of the 3D view, and its
+  // blood covers about 5%.
+  EXPECT_GT(countPixels(image, bloodPalette), 1280 * 800 / 25);
 }
 
 TEST_F(ViewUnderXvfb, BadSizeAndUnknownScenarioAreRejectedWithOneLine) {
