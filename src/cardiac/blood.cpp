@@ -129,6 +129,7 @@ VesselSites vesselSites(const Scenario& scenario, const LvModel& model) {
   VesselSites sites;
   fill(path.mitral, path.inflowTop, sites.inflow);
   fill(path.aortic, path.outflowTop, sites.outflow);
+  sites.lowest = first;
   return sites;
 }
 

@@ -45,6 +45,7 @@ std::vector<pbd::Vec3> bloodStartPositions(const Scenario& scenario, const LvMod
 // on them (vesselFillShare).
 struct VesselSites {
   std::vector<Vec3> inflow, outflow;
+  Real lowest = 0;  // y of the lowest site of either (blood below it is farther than a spacing)
 };
 VesselSites vesselSites(const Scenario& scenario, const LvModel& model);
 

@@ -135,6 +135,9 @@ void HeartSimulation::buildBlood() {
     std::vector<std::uint8_t> wetted(m_model->mesh.vertices.size(), 0);
     for (std::size_t v = 0; v < wetted.size(); v += 2) wetted[v] = 1;
     m_wallContact->setWettedVertices(wetted);
+    // The faces blood touches, all of whose vertices are wetted: they lend it their density.
+    for (const pbd::Triangle& t : m_model->surface)
+      if (wetted[t[0]] && wetted[t[1]] && wetted[t[2]]) m_lumenSurface.push_back(t);
     m_circulation.emplace(*m_model, m_scenario);
     m_vesselSites = vesselSites(m_scenario, *m_model);
     if (m_lumped) m_circulation->valves.closeOutlet(m_circulation->loop.outletLid());
@@ -206,11 +209,9 @@ void HeartSimulation::beginStep(const pbd::StepContext& context) {
     // The aorta takes the lumped aortic flow less what the outflow vessel's own lengthening
     // holds (its root descends with the base, its far end is pinned): as the base rises in
     // diastole the shortening vessel pushes that blood on into the aorta.
-    const double lengthening = (descent - m_lastBaseDescent) * double(moved.aortic.radius * moved.aortic.radius) * std::numbers::pi;
+    const double lengthening = (descent - m_lastBaseDescent) * m_lumped->parameters().aorticRootArea;
     m_lastBaseDescent = descent;
-    // A regurgitant valve lets blood back in 3D as in the lumped model; the aorta takes the
-    // blood the ventricle pushes past the outflow vessel's end while the lumped aortic flow is
-    // forward (the wall moves the lumped volume, so that is the lumped stroke volume).
+    // A regurgitant valve lets blood back in 3D as in the lumped model.
     m_circulation->valves.follow({lumped.mitralFlow != 0, lumped.aorticOpen || lumped.aorticFlow < 0});
     m_circulation->loop.allowOutflow(lumped.aorticFlow * double(context.dt) - lengthening,
                                      double(m_circulation->meter.particleVolume()));
@@ -273,12 +274,6 @@ void HeartSimulation::solveBloodDensity(const pbd::StepContext& context) {
 // beside it for this step's iterations.
 void HeartSimulation::lendWallDensity(const pbd::StepContext& context) {
   // Model vertex v is particle m_firstWallParticle + v = v (the wall is the first body).
-  if (m_lumenSurface.empty()) {
-    // The faces blood touches: cavity and vessel lumens, all of whose vertices are on the
-    // inner layer (even ids, lv_model.h).
-    for (const pbd::Triangle& t : m_model->surface)
-      if (t[0] % 2 == 0 && t[1] % 2 == 0 && t[2] % 2 == 0) m_lumenSurface.push_back(t);
-  }
   m_fluid->lendWallDensity(m_particles.predicted, m_lumenSurface, context.threads);
 }
 
@@ -303,12 +298,9 @@ void HeartSimulation::endStep(const pbd::StepContext&) {
 double HeartSimulation::vesselFill() const {
   if (!m_circulation) return 1;
   const Real d = m_scenario.blood.spacing;
-  Real lowest = std::numeric_limits<Real>::max();
-  for (const auto* sites : {&m_vesselSites.inflow, &m_vesselSites.outflow})
-    for (const Vec3& x : *sites) lowest = std::min(lowest, x.y());
   std::vector<Vec3> blood;
   for (std::size_t i = m_firstBloodParticle; i < m_particles.size(); ++i)
-    if (m_particles.active(i) && m_particles.position[i].y() >= lowest - d) blood.push_back(m_particles.position[i]);
+    if (m_particles.active(i) && m_particles.position[i].y() >= m_vesselSites.lowest - d) blood.push_back(m_particles.position[i]);
   return std::min(vesselFillShare(m_vesselSites.inflow, blood, d), vesselFillShare(m_vesselSites.outflow, blood, d));
 }
 

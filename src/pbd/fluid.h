@@ -120,7 +120,9 @@ void computeDensityConstraints(const std::vector<Real>& densities, std::span<con
 // thesis eq. 4.10), s_corr = -k (W_poly6(|p_i - p_j|)/W_poly6(deltaQ))^n when enabled (eq. 13),
 // plus sum_j (1/2)(2r - |p_ij|) p_ij/|p_ij| over pairs closer than 2r (thesis eq. 4.6, equal
 // masses) when settings.collisionRadius = r > 0. With walls, the wall's share of grad_{p_i} C_i
-// adds lambda_i (-G(d) n): a compressed particle is pushed off the wall (the wall does not move).
+// adds 2 lambda_i (-G(d) n): the wall's share of i's own constraint and, as for a fluid neighbour
+// j (lambda_i + lambda_j), a mirrored one with the wall's lambda taken as lambda_i (pressure
+// mirroring, Akinci et al. 2012): a compressed particle is pushed off the wall, which does not move.
 void computeDensityCorrections(const std::vector<Vec3>& positions, const NeighbourLists& lists,
                                std::span<const Index> subset, const SphKernels& kernels,
                                const FluidSettings& settings, const std::vector<Real>& lambdas,
