@@ -1,10 +1,10 @@
 #include "cardiac/blood.h"
 
+#include "cardiac/heart_sites.h"
+
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
-#include <unordered_map>
 #include <memory>
 #include <cmath>
 #include <sstream>
@@ -84,30 +84,6 @@ std::vector<Vec3> vesselLattice(const Scenario& scenario, const LvModel& model) 
   return x;
 }
 
-// y of the cavity lattice's top layer: the fluidBlock below heartLattice's, whose layers are at
-// -c + (j + 1/2) d, the highest at most a particle radius under the base plane.
-Real cavityTopLayer(Real c, Real d, Real r) {
-  return -c + (std::floor((c - r) / d - Real(0.5) + Real(1e-4)) + Real(0.5)) * d;
-}
-
-// Sites of the whole heart's lumen, a particle radius in from the walls: the cavity's half
-// spheroid (y below the base plane) on a cubic lattice, the vessels at rest density above it.
-std::vector<Vec3> heartLattice(const Scenario& scenario, const LvModel& model) {
-  const Real d = scenario.blood.spacing, r = scenario.blood.radius;
-  const LvGeometryParams& g = scenario.geometry;
-  const Real a = g.endoRadius - r, c = g.endoLongAxis - r;
-  std::vector<Vec3> x;
-  if (!(a > 0 && c > 0)) return x;
-  for (const Vec3& p : pbd::fluidBlock(Vec3(-g.endoRadius, -c, -g.endoRadius), Vec3(g.endoRadius, 0, g.endoRadius), d)) {
-    if (p.y() <= -r && (p.x() / a) * (p.x() / a) + (p.y() / c) * (p.y() / c) + (p.z() / a) * (p.z() / a) <= 1)
-      x.push_back(p);
-  }
-  const VesselSites vessels = vesselSites(scenario, model);
-  x.insert(x.end(), vessels.inflow.begin(), vessels.inflow.end());
-  x.insert(x.end(), vessels.outflow.begin(), vessels.outflow.end());
-  return x;
-}
-
 double physicalMemoryBytes() {
   const long pages = sysconf(_SC_PHYS_PAGES);
   const long size = sysconf(_SC_PAGE_SIZE);
@@ -115,53 +91,6 @@ double physicalMemoryBytes() {
 }
 
 }  // namespace
-
-VesselSites vesselSites(const Scenario& scenario, const LvModel& model) {
-  const Real d = scenario.blood.spacing, r = scenario.blood.radius;
-  const LvGeometryParams& g = scenario.geometry;
-  const FlowPath& path = model.flowPath;
-  const Real first = cavityTopLayer(g.endoLongAxis - r, d, r) + d;
-  auto fill = [&](const Orifice& lumen, Real top, std::vector<Vec3>& out) {
-    int layer = 0;
-    for (Real y = first; y <= top - r + Real(1e-6) * d; y = first + Real(++layer) * d)
-      for (const Vec3& site : lumenDiscSites(lumen, y, lumen.radius - r, d, layer % 2 == 1)) out.push_back(site);
-  };
-  VesselSites sites;
-  fill(path.mitral, path.inflowTop, sites.inflow);
-  fill(path.aortic, path.outflowTop, sites.outflow);
-  sites.lowest = first;
-  return sites;
-}
-
-double vesselFillShare(const std::vector<Vec3>& sites, const std::vector<Vec3>& blood, Real reach) {
-  if (sites.empty()) return 1;
-  // Blood binned in cells of edge `reach`; a site looks in its 27 cells.
-  auto cellOf = [reach](const Vec3& p) {
-    return std::array<long, 3>{long(std::floor(p.x() / reach)), long(std::floor(p.y() / reach)),
-                               long(std::floor(p.z() / reach))};
-  };
-  auto key = [](long i, long j, long k) { return (i * 73856093L) ^ (j * 19349663L) ^ (k * 83492791L); };
-  std::unordered_multimap<long, Index> cells;
-  cells.reserve(blood.size());
-  for (std::size_t b = 0; b < blood.size(); ++b) {
-    const auto c = cellOf(blood[b]);
-    cells.emplace(key(c[0], c[1], c[2]), Index(b));
-  }
-  std::size_t covered = 0;
-  for (const Vec3& site : sites) {
-    const auto c = cellOf(site);
-    bool found = false;
-    for (long k = -1; k <= 1 && !found; ++k)
-      for (long j = -1; j <= 1 && !found; ++j)
-        for (long i = -1; i <= 1 && !found; ++i) {
-          const auto range = cells.equal_range(key(c[0] + i, c[1] + j, c[2] + k));
-          for (auto it = range.first; it != range.second && !found; ++it)
-            found = (blood[it->second] - site).squaredNorm() <= reach * reach;
-        }
-    covered += found;
-  }
-  return double(covered) / double(sites.size());
-}
 
 pbd::FluidSettings bloodFluidSettings(const BloodSettings& b) {
   pbd::FluidSettings f;
@@ -257,7 +186,7 @@ std::vector<Vec3> bloodStartPositions(const Scenario& scenario, const LvModel* m
   }
   if (b.start == BloodSettings::Start::Vessel || b.start == BloodSettings::Start::Heart) {
     std::vector<Vec3> x =
-        b.start == BloodSettings::Start::Heart ? heartLattice(scenario, *model) : vesselLattice(scenario, *model);
+        b.start == BloodSettings::Start::Heart ? heartSites(scenario, *model) : vesselLattice(scenario, *model);
     if (b.particles > 0) {
       // With the closed loop the rest waits in the body and enters through the inflow vessel
       // (HeartSimulation); without it every particle needs a site.

@@ -39,21 +39,6 @@ pbd::FluidStepSettings bloodSolverSettings(const Scenario& scenario);
 // sites than blood.particles: the rest start outside the model, waiting to enter.
 std::vector<pbd::Vec3> bloodStartPositions(const Scenario& scenario, const LvModel* model = nullptr);
 
-// Sites of each vessel's lumen at the blood's rest density: layers of lumenDiscSites a spacing
-// apart, from just above the cavity's lattice (under the valve plane) to a particle radius
-// under the vessel's far end. blood.start = "heart" fills them; the vessels' fill is measured
-// on them (vesselFillShare).
-struct VesselSites {
-  std::vector<Vec3> inflow, outflow;
-  Real lowest = 0;  // y of the lowest site of either (blood below it is farther than a spacing)
-};
-VesselSites vesselSites(const Scenario& scenario, const LvModel& model);
-
-// Share of `sites` with one of `blood` within `reach` (a spacing): the share of a lumen that
-// holds blood rather than a void. The vessels stay straight and keep their radius while the
-// base descends, so sites taken at rest stay inside their lumen.
-double vesselFillShare(const std::vector<Vec3>& sites, const std::vector<Vec3>& blood, Real reach);
-
 // Rough bytes per blood particle of a run (state, solver buffers, neighbour lists of about
 // `neighbours` entries), for the memory check above.
 std::size_t bloodBytesPerParticle(std::size_t neighbours);

@@ -6,7 +6,7 @@
 namespace hs::cardiac {
 
 BloodLoop::BloodLoop(const FlowPath& path, const BloodSettings& blood, int inletLayers)
-    : m_path(path), m_spacing(blood.spacing), m_inletLayers(std::max(1, inletLayers)) {
+    : m_path(path), m_spacing(blood.spacing), m_radius(blood.radius), m_inletLayers(std::max(1, inletLayers)) {
   const Orifice& mitral = path.mitral;
   const Real reach = mitral.radius - blood.radius;
   if (m_inletLayers == 1) {
@@ -68,48 +68,56 @@ BloodLoop::Turnover BloodLoop::circulate(pbd::Particles& particles, Index first)
       ++turnover.returned;
     }
   }
-  if (m_outletMetered) turnover.returned += meterOutlet(particles, first);
-  turnover.reentered = reenter(particles, first);
+  turnover.reentered = m_inletMetered ? enterLayers(particles, first) : reenter(particles, first);
   return turnover;
 }
 
-void BloodLoop::allowOutflow(double volume, double particleVolume) {
-  m_outletMetered = true;
-  // What the 3D blood did not take in time is not carried over beyond a few particles: blood
-  // that lagged behind the lumped flow must not drain the vessel later, when the valve shuts.
-  const double step = volume / particleVolume;
-  m_outletAllowance = std::clamp(m_outletAllowance + step, 0.0, std::max(step, 0.0) + kOutletCarryOver);
+void BloodLoop::meterInlet(Real travel, Real dt) {
+  m_inletMetered = true;
+  // Moving back out (a regurgitant mitral valve), the plug carries blood past the far end, where
+  // it is parked: no debt of layers is kept for it.
+  m_inletTravel = std::max(Real(0), m_inletTravel + travel);
+  m_inletVelocity = (travel / dt) * m_path.mitral.forward;
 }
 
-Orifice BloodLoop::outletLid() const {
-  Orifice lid = m_path.aortic;
-  lid.centre.y() = m_path.outflowTop;
-  lid.radius += m_spacing;
-  return lid;
+std::size_t BloodLoop::enterLayers(pbd::Particles& particles, Index first) {
+  const Orifice& mitral = m_path.mitral;
+  std::size_t entered = 0;
+  bool located = false;
+  while (m_inletTravel >= m_spacing && !m_queue.empty()) {
+    if (!located) locateParked(particles, first);
+    located = true;
+    m_inletTravel -= m_spacing;
+    // A spacing behind the last layer, which entered half a spacing under the far end and has
+    // since moved on by m_inletTravel more.
+    const Real y = m_path.inflowTop - Real(0.5) * m_spacing - m_inletTravel;
+    for (const Vec3& site : lumenDiscSites(mitral, y, mitral.radius - m_radius, m_spacing, m_inletLayer % 2 == 1)) {
+      if (m_queue.empty()) break;
+      enter(particles, first, site, m_inletVelocity);
+      ++entered;
+    }
+    ++m_inletLayer;
+  }
+  return entered;
 }
 
-// Parks the blood pressed against the outlet's lid (within a spacing under it), highest first,
-// as far as the allowance goes.
-std::size_t BloodLoop::meterOutlet(pbd::Particles& particles, Index first) {
-  const Orifice& aortic = m_path.aortic;
-  m_underLid.clear();
-  for (std::size_t i = first; i < particles.size(); ++i) {
-    const Vec3& x = particles.position[i];
-    if (particles.active(i) && x.y() > m_path.outflowTop - m_spacing && aortic.radial(x) < aortic.radius + m_spacing)
-      m_underLid.push_back(Index(i));
-  }
-  std::sort(m_underLid.begin(), m_underLid.end(), [&](Index a, Index b) {
-    return particles.position[a].y() > particles.position[b].y() ||
-           (particles.position[a].y() == particles.position[b].y() && particles.id[a] < particles.id[b]);
-  });
-  std::size_t parked = 0;
-  for (Index i : m_underLid) {
-    if (m_outletAllowance < 1) break;
-    park(particles, i);
-    m_outletAllowance -= 1;
-    ++parked;
-  }
-  return parked;
+// Where each parked particle is now (the set may have been reordered since it was parked). Blood
+// is created after the wall and only reordered among itself, so its ids are [first, end).
+void BloodLoop::locateParked(const pbd::Particles& particles, Index first) {
+  m_parkedAt.assign(particles.size() - first, kFreeSlot);
+  for (std::size_t i = first; i < particles.size(); ++i)
+    if (!particles.active(i)) m_parkedAt[particles.id[i] - first] = Index(i);
+}
+
+// The first in line enters at `site` (m_parkedAt must be current).
+void BloodLoop::enter(pbd::Particles& particles, Index first, const Vec3& site, const Vec3& velocity) {
+  const Index id = m_queue.front();
+  m_queue.pop_front();
+  std::replace(m_lot.begin(), m_lot.end(), id, kFreeSlot);
+  const Index i = m_parkedAt[id - first];
+  particles.position[i] = particles.predicted[i] = site;
+  particles.velocity[i] = velocity;
+  particles.state[i] = pbd::ParticleState::Active;
 }
 
 std::size_t BloodLoop::reenter(pbd::Particles& particles, Index first) {
@@ -144,13 +152,7 @@ std::size_t BloodLoop::reenter(pbd::Particles& particles, Index first) {
     bool free = true;
     for (const Vec3& x : m_occupied) free = free && (x - site).squaredNorm() >= clear2;
     if (!free) continue;
-    const Index id = m_queue.front();
-    m_queue.pop_front();
-    std::replace(m_lot.begin(), m_lot.end(), id, kFreeSlot);
-    const Index i = m_parkedAt[id - firstId];
-    particles.position[i] = particles.predicted[i] = site;
-    particles.velocity[i] = velocity;
-    particles.state[i] = pbd::ParticleState::Active;
+    enter(particles, first, site, velocity);
     m_occupied.push_back(site);
     ++reentered;
   }

@@ -33,30 +33,28 @@ class BloodLoop {
 
   [[nodiscard]] std::size_t waiting() const { return m_queue.size(); }
 
-  // The outflow vessel's far end as the aorta's boundary (lumped circulation): a closed lid
-  // (Valves::closeOutlet) under which blood leaves only as the lumped aortic flow carries it
-  // away. Each step adds that flow's volume (m^3) to an allowance counted in particles; the
-  // particles pressed against the lid (within a spacing under it) are parked, highest first,
-  // while it holds one.
-  // So the vessel does not drain when the valve shuts or the column runs on. Unused allowance
-  // carries over a few particles only. Without a call the end is open.
-  void allowOutflow(double volume, double particleVolume);
-  // The lid that allowOutflow's blood leaves under: the vessel's end disc, a spacing wider.
-  [[nodiscard]] Orifice outletLid() const;
+  // The lumped circulation's inlet (VesselEnds): blood enters in whole layers of sites at rest
+  // density (lumenDiscSites) a spacing apart, one layer for each spacing the inflow's plug has
+  // moved on (`travel`: m into the heart this step), with the plug's velocity, instead of at
+  // the free sites of the plain inlet.
+  void meterInlet(Real travel, Real dt);
+
 
  private:
   [[nodiscard]] Vec3 parkingSite(std::size_t slot) const;
   void park(pbd::Particles& particles, Index particle);
   std::size_t reenter(pbd::Particles& particles, Index first);
-
-  std::size_t meterOutlet(pbd::Particles& particles, Index first);
+  std::size_t enterLayers(pbd::Particles& particles, Index first);
+  void locateParked(const pbd::Particles& particles, Index first);
+  void enter(pbd::Particles& particles, Index first, const Vec3& site, const Vec3& velocity);
 
   FlowPath m_path;
-  Real m_spacing;
+  Real m_spacing, m_radius;
   int m_inletLayers;
-  static constexpr double kOutletCarryOver = 10;  // particles
-  bool m_outletMetered = false;
-  double m_outletAllowance = 0;  // particles
+  bool m_inletMetered = false;
+  Real m_inletTravel = 0;  // m the plug has moved on since the last layer entered
+  Vec3 m_inletVelocity = Vec3::Zero();
+  int m_inletLayer = 0;  // layers entered so far (alternate ones turned by half a site)
   std::vector<Vec3> m_inletSites;  // lattice sites across the inflow vessel's far end
   Vec3 m_parkingOrigin = Vec3::Zero();
   Real m_parkingPitch = 0;
@@ -65,7 +63,6 @@ class BloodLoop {
   std::deque<Index> m_queue;   // parked particle ids, first in first out
   std::vector<Vec3> m_occupied;  // scratch: blood near the inlet
   std::vector<Index> m_parkedAt;  // scratch: particle index of each parked blood id - first id
-  std::vector<Index> m_underLid;  // scratch
 };
 
 }  // namespace hs::cardiac

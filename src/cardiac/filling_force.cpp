@@ -6,12 +6,7 @@ FillingForce::FillingForce(const FlowPath& path, const BloodSettings& blood, Rea
     : m_path(path),
       m_radius(blood.radius),
       m_spacing(blood.spacing),
-      m_density(blood.restDensity),
       m_acceleration(Real(atrialPressureMmHg * kPascalPerMmHg) / (blood.restDensity * path.inflowLength)) {}
-
-void FillingForce::setPressure(double pascals) {
-  m_acceleration = Real(pascals / (double(m_density) * double(m_path.inflowLength)));
-}
 
 void FillingForce::apply(pbd::Particles& particles, pbd::Index first, const pbd::StepContext& context) const {
   if (m_acceleration == Real(0)) return;

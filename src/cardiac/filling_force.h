@@ -17,12 +17,10 @@ class FillingForce {
   // v += a dt for the active blood [first, end) in the inflow vessel.
   void apply(pbd::Particles& particles, pbd::Index first, const pbd::StepContext& context) const;
   [[nodiscard]] Real acceleration() const { return m_acceleration; }  // m/s^2
-  // A filling pressure that changes (the lumped circulation's atrium against its ventricle).
-  void setPressure(double pascals);
 
  private:
   FlowPath m_path;
-  Real m_radius, m_spacing, m_density;
+  Real m_radius, m_spacing;
   Real m_acceleration;  // a = P_a / (rho0 L)
 };
 

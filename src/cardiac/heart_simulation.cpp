@@ -139,8 +139,10 @@ void HeartSimulation::buildBlood() {
     for (const pbd::Triangle& t : m_model->surface)
       if (wetted[t[0]] && wetted[t[1]] && wetted[t[2]]) m_lumenSurface.push_back(t);
     m_circulation.emplace(*m_model, m_scenario);
+    if (m_lumped) m_ends.emplace(m_model->flowPath, m_scenario.blood);
+    // The vessels' fill is measured on their lumens between the ends' buffers.
     m_vesselSites = vesselSites(m_scenario, *m_model);
-    if (m_lumped) m_circulation->valves.closeOutlet(m_circulation->loop.outletLid());
+    if (m_ends) m_vesselSites.drop([&](const Vec3& site) { return m_ends->inBuffer(site); });
     if (m_lumped && m_scenario.circulation.aorticValveArea > 0)
       m_circulation->valves.narrowAorticOpening(std::sqrt(m_scenario.circulation.aorticValveArea / std::numbers::pi_v<Real>));
   }
@@ -184,7 +186,7 @@ void HeartSimulation::step() {
   beginStep(context);                                                       // reorder, valves, flow meter
   applyExternalForces(context);                                             // filling pressure, gravity
   pbd::predictPositions(m_particles, context);                              // p = x + dt v
-  moveWall(context);                                                        // cardiac cycle
+  moveWall(context);                                                        // cardiac cycle, vessels' ends
   solveBloodDensity(context);                                               // PBF, valves and wall inside
   pbd::projectConstraints(m_constraints, m_particles, m_solver, context);   // the wall's own constraints
   resolveBloodContacts(context);                                            // valves, wall push-out
@@ -206,18 +208,11 @@ void HeartSimulation::beginStep(const pbd::StepContext& context) {
     const FlowPath moved = m_model->flowPath.descended(Real(descent));
     m_circulation->valves.follow(moved);
     m_circulation->meter.follow(moved);
-    // The aorta takes the lumped aortic flow less what the outflow vessel's own lengthening
-    // holds (its root descends with the base, its far end is pinned): as the base rises in
-    // diastole the shortening vessel pushes that blood on into the aorta.
-    const double lengthening = (descent - m_lastBaseDescent) * m_lumped->parameters().aorticRootArea;
+    // The vessels' ends take the lumped flows; the atrium's push is the inflow's plug.
+    if (m_ends) m_ends->setFlows(lumped.mitralFlow, lumped.aorticFlow, (descent - m_lastBaseDescent) / double(context.dt));
     m_lastBaseDescent = descent;
     // A regurgitant valve lets blood back in 3D as in the lumped model.
     m_circulation->valves.follow({lumped.mitralFlow != 0, lumped.aorticOpen || lumped.aorticFlow < 0});
-    m_circulation->loop.allowOutflow(lumped.aorticFlow * double(context.dt) - lengthening,
-                                     double(m_circulation->meter.particleVolume()));
-    // The atrium drives the inflow vessel by its pressure over the ventricle's while the mitral
-    // valve is open; against the shut valve it would only squeeze the column.
-    m_circulation->filling.setPressure(lumped.mitralOpen ? std::max(0.0, lumped.laPressure - lumped.lvPressure) : 0.0);
   } else {
     m_circulation->valves.decide(m_lastPhase, m_circulation->meter.lastStep().valvePressures);
   }
@@ -232,9 +227,10 @@ void HeartSimulation::advanceLumpedCirculation(const pbd::StepContext& context) 
   m_lumped->advance(end, double(context.dt), activation);
 }
 
-// The filling pressure before gravity (the order of the two sums is part of the state).
+// The filling pressure before gravity (the order of the two sums is part of the state). With the
+// lumped circulation the inflow's plug (VesselEnds) is the atrium's push instead.
 void HeartSimulation::applyExternalForces(const pbd::StepContext& context) {
-  if (m_circulation) m_circulation->filling.apply(m_particles, m_firstBloodParticle, context);
+  if (m_circulation && !m_lumped) m_circulation->filling.apply(m_particles, m_firstBloodParticle, context);
   pbd::applyExternalForces(m_particles, m_solver, context);
 }
 
@@ -246,6 +242,9 @@ void HeartSimulation::moveWall(const pbd::StepContext& context) {
   }
   m_cycle->advanceClocks(context.dt);
   m_drivenWall->drive(m_particles.position, m_particles.predicted, m_lumped->last().lvVolume);
+  if (!m_ends) return;  // no blood
+  m_ends->drive(m_particles, m_firstBloodParticle, context.dt);  // the lumped flows at the vessels' ends
+  m_circulation->loop.meterInlet(m_ends->inflowSpeed() * context.dt, context.dt);
 }
 
 // PBF's density iterations. The wall takes part in every one (closed valves first, the wall
@@ -266,6 +265,7 @@ void HeartSimulation::solveBloodDensity(const pbd::StepContext& context) {
     std::vector<Vec3>& points = m_fluid->workingPositions();
     m_circulation->valves.gatePoints(m_particles, points, m_fluid->slotParticles());
     m_wallContact->resolvePoints(m_particles, points, m_fluid->slotParticles(), contact);
+    if (m_ends) m_ends->hold(points, m_fluid->slotParticles());
   }
   m_fluid->endDensitySolve(m_particles, context);
 }
@@ -283,6 +283,7 @@ void HeartSimulation::resolveBloodContacts(const pbd::StepContext& context) {
   if (!m_wallContact) return;
   m_circulation->valves.gateParticles(m_particles, m_firstBloodParticle);
   m_wallContact->resolve(m_particles, m_firstBloodParticle, Index(m_particles.size()), wallContactSettings(context));
+  if (m_ends) m_ends->hold(m_particles);
 }
 
 // What crossed where, then the loop: blood past a vessel's end waits, waiting blood re-enters.
@@ -297,11 +298,16 @@ void HeartSimulation::endStep(const pbd::StepContext&) {
 
 double HeartSimulation::vesselFill() const {
   if (!m_circulation) return 1;
-  const Real d = m_scenario.blood.spacing;
+  const BloodSettings& b = m_scenario.blood;
+  // Blood farther below the lowest site than a kernel support adds nothing to any site.
   std::vector<Vec3> blood;
   for (std::size_t i = m_firstBloodParticle; i < m_particles.size(); ++i)
-    if (m_particles.active(i) && m_particles.position[i].y() >= m_vesselSites.lowest - d) blood.push_back(m_particles.position[i]);
-  return std::min(vesselFillShare(m_vesselSites.inflow, blood, d), vesselFillShare(m_vesselSites.outflow, blood, d));
+    if (m_particles.active(i) && m_particles.position[i].y() >= m_vesselSites.lowest - b.supportRadius)
+      blood.push_back(m_particles.position[i]);
+  const double inflow = vesselFillShare(m_vesselSites.inflow, m_vesselSites.inflowFull, blood, b.spacing, b.supportRadius);
+  const double outflow =
+      vesselFillShare(m_vesselSites.outflow, m_vesselSites.outflowFull, blood, b.spacing, b.supportRadius);
+  return std::min(inflow, outflow);
 }
 
 const std::vector<Real>& HeartSimulation::pressures() const {

@@ -14,6 +14,8 @@
 #include "cardiac/blood.h"
 #include "cardiac/cardiac_cycle.h"
 #include "cardiac/circulation.h"
+#include "cardiac/heart_sites.h"
+#include "cardiac/vessel_ends.h"
 #include "cardiac/lumped_circulation.h"
 #include "cardiac/volume_driven_wall.h"
 #include "cardiac/lv_model.h"
@@ -122,6 +124,7 @@ class HeartSimulation {
   std::optional<Circulation> m_circulation;                 // heart and blood
   std::optional<LumpedCirculation> m_lumped;                // circulation.lumped
   std::optional<VolumeDrivenWall> m_drivenWall;             // circulation.lumped
+  std::optional<VesselEnds> m_ends;                         // circulation.lumped
   std::vector<double> m_regionShares;                       // circulation.lumped: per beating region
   BeatTiming m_beatTiming;                                  // circulation.lumped
   VesselSites m_vesselSites;                                // heart and blood

@@ -44,17 +44,16 @@ void Valves::gate(const Vec3& x, Vec3& p) const {
   } else if (m_aorticOpening && m_aortic.radial(p) >= *m_aorticOpening) {
     gateClosedOrifice(m_aortic, x, p, m_radius);  // the stenotic valve's ring
   }
-  if (m_outletLid) gateClosedOrifice(*m_outletLid, x, p, m_radius);
 }
 
 void Valves::gatePoints(const pbd::Particles& particles, std::vector<Vec3>& points,
                         std::span<const Index> ids) const {
-  if (m_states.mitralOpen && m_states.aorticOpen && !m_outletLid && !m_aorticOpening) return;
+  if (m_states.mitralOpen && m_states.aorticOpen && !m_aorticOpening) return;
   for (std::size_t k = 0; k < ids.size(); ++k) gate(particles.position[ids[k]], points[k]);
 }
 
 void Valves::gateParticles(pbd::Particles& particles, Index first) const {
-  if (m_states.mitralOpen && m_states.aorticOpen && !m_outletLid && !m_aorticOpening) return;
+  if (m_states.mitralOpen && m_states.aorticOpen && !m_aorticOpening) return;
   for (std::size_t i = first; i < particles.size(); ++i) gate(particles.position[i], particles.predicted[i]);
 }
 

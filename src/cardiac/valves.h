@@ -53,9 +53,6 @@ class Valves {
     m_mitral = path.mitral;
     m_aortic = path.aortic;
   }
-  // A lid over the outflow vessel's far end, always closed (blood_loop.h takes blood out
-  // below it as the lumped aortic flow says).
-  void closeOutlet(const Orifice& lid) { m_outletLid = lid; }
   // A stenotic aortic valve: open, it lets blood through a central opening of this radius only
   // (m, smaller than the orifice); the ring around it stays shut.
   void narrowAorticOpening(Real radius) { m_aorticOpening = radius; }
@@ -71,7 +68,6 @@ class Valves {
   void gate(const Vec3& x, Vec3& p) const;
 
   Orifice m_mitral, m_aortic;
-  std::optional<Orifice> m_outletLid;
   std::optional<Real> m_aorticOpening;
   ValveMode m_mode;
   bool m_cycleEnabled;

@@ -1,7 +1,8 @@
-// The vessels' rest-density sites and the fill measured on them (blood.h, flow_path.h): a disc
-// of lumenDiscSites holds about one site per spacing^2 with no two closer than most of a spacing,
-// all inside the lumen less a particle radius; vesselFillShare's cell hash gives what a brute
-// force over every blood particle gives; and a vessel with a void in it reads less than full.
+// The heart's rest-density sites and the vessels' fill measured on them (heart_sites.h,
+// flow_path.h): a disc of lumenDiscSites holds about one site per spacing^2 with no two closer
+// than most of a spacing, all inside the lumen less a particle radius; the blood colour's cell
+// hash gives what a brute force over every particle gives and reads 1 inside blood at rest; a
+// vessel full of blood reads full, and one with a void in it less.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +10,8 @@
 #include <random>
 #include <vector>
 
-#include "cardiac/blood.h"
+#include "cardiac/heart_sites.h"
+#include "pbd/sph_kernels.h"
 #include "cardiac/flow_path.h"
 #include "cardiac/lv_model.h"
 
@@ -39,26 +41,40 @@ TEST(LumenDiscSites, OneSitePerSpacingSquaredInsideTheLumen) {
   }
 }
 
-// The cell hash against a brute force over every particle, bitwise the same share.
-TEST(VesselFillShare, AgreesWithBruteForce) {
+// The colour's cell hash against a brute force over every particle, summed in index order:
+// bitwise the same.
+TEST(BloodColour, AgreesWithBruteForce) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<Real> u(Real(-0.02), Real(0.02));
-  std::vector<Vec3> sites(400), blood(900);
+  std::vector<Vec3> sites(300), blood(900);
   for (Vec3& s : sites) s = Vec3(u(rng), u(rng), u(rng));
   for (Vec3& b : blood) b = Vec3(u(rng), u(rng), u(rng));
-  std::size_t covered = 0;
-  for (const Vec3& s : sites) {
-    bool found = false;
-    for (const Vec3& b : blood) found = found || (b - s).squaredNorm() <= kSpacing * kSpacing;
-    covered += found;
+  const Real h = 2 * kSpacing;
+  const std::vector<double> colour = bloodColour(sites, blood, kSpacing, h);
+  const pbd::SphKernels kernels = pbd::makeSphKernels(h);
+  const double volume = double(kSpacing) * double(kSpacing) * double(kSpacing);
+  std::size_t nonzero = 0;
+  for (std::size_t s = 0; s < sites.size(); ++s) {
+    double sum = 0;
+    for (const Vec3& b : blood) sum += double(pbd::poly6(kernels, (b - sites[s]).squaredNorm()));
+    EXPECT_EQ(colour[s], volume * sum) << "site " << s;
+    nonzero += colour[s] > 0;
   }
-  const double brute = double(covered) / double(sites.size());
-  EXPECT_EQ(vesselFillShare(sites, blood, kSpacing), brute);
-  EXPECT_GT(brute, 0.05);
-  EXPECT_LT(brute, 0.95) << "the case must have both covered and uncovered sites";
+  EXPECT_GT(nonzero, sites.size() / 2) << "the case must have blood near most sites";
 }
 
-TEST(VesselFillShare, AFullVesselReadsFullAndAVoidLess) {
+// Deep inside blood at rest density the colour reads about 1.
+TEST(BloodColour, ReadsAboutOneInsideBloodAtRest) {
+  std::vector<Vec3> blood;
+  for (int i = -6; i <= 6; ++i)
+    for (int j = -6; j <= 6; ++j)
+      for (int k = -6; k <= 6; ++k) blood.emplace_back(Real(i) * kSpacing, Real(j) * kSpacing, Real(k) * kSpacing);
+  const std::vector<double> colour = bloodColour({Vec3::Zero(), Vec3(kRadius, 0, 0)}, blood, kSpacing, 2 * kSpacing);
+  EXPECT_NEAR(colour[0], 1.0, 0.05);
+  EXPECT_NEAR(colour[1], 1.0, 0.05);
+}
+
+Scenario realSizeHeart() {
   Scenario s;
   s.geometry.endoRadius = Real(0.032);
   s.geometry.endoLongAxis = Real(0.06);
@@ -71,24 +87,64 @@ TEST(VesselFillShare, AFullVesselReadsFullAndAVoidLess) {
   s.geometry.outflowVesselLength = Real(0.03);
   s.blood.spacing = kSpacing;
   s.blood.radius = kRadius;
+  s.blood.supportRadius = 2 * kSpacing;
+  return s;
+}
+
+// Blood on every site fills the vessels; one particle moved away leaves no void; a void a few
+// particles across, or the vessel's upper half empty, reads as such.
+TEST(VesselFillShare, AFullVesselReadsFullAndAVoidLess) {
+  const Scenario s = realSizeHeart();
   const LvModel model = buildLvModel(s.geometry);
   const VesselSites sites = vesselSites(s, model);
   ASSERT_FALSE(sites.inflow.empty());
   ASSERT_FALSE(sites.outflow.empty());
-  // Blood on the sites themselves fills the vessel; without its upper half, half is empty.
-  EXPECT_EQ(vesselFillShare(sites.outflow, sites.outflow, kSpacing), 1.0);
+  ASSERT_EQ(sites.outflowFull.size(), sites.outflow.size());
+  const std::vector<Vec3> full = heartSites(s, model);
+  const Real h = s.blood.supportRadius;
+  EXPECT_EQ(vesselFillShare(sites.outflow, sites.outflowFull, full, kSpacing, h), 1.0);
+  EXPECT_EQ(vesselFillShare(sites.inflow, sites.inflowFull, full, kSpacing, h), 1.0);
+
+  // The outflow's middle site: without the particle on it, still full; without a ball of 1.5
+  // spacings around it, a void.
+  Vec3 middle = sites.outflow[sites.outflow.size() / 2];
+  std::vector<Vec3> oneGone, ballGone, lowerHalf;
+  for (const Vec3& x : full) {
+    if ((x - middle).norm() > Real(1e-6)) oneGone.push_back(x);
+    if ((x - middle).norm() > Real(1.5) * kSpacing) ballGone.push_back(x);
+  }
+  EXPECT_EQ(vesselFillShare(sites.outflow, sites.outflowFull, oneGone, kSpacing, h), 1.0);
+  EXPECT_LT(vesselFillShare(sites.outflow, sites.outflowFull, ballGone, kSpacing, h), 1.0);
+
   Real lowest = sites.outflow.front().y(), highest = lowest;
   for (const Vec3& x : sites.outflow) {
     lowest = std::min(lowest, x.y());
     highest = std::max(highest, x.y());
   }
-  std::vector<Vec3> lowerHalf;
-  for (const Vec3& x : sites.outflow)
+  for (const Vec3& x : full)
     if (x.y() < Real(0.5) * (lowest + highest)) lowerHalf.push_back(x);
-  const double half = vesselFillShare(sites.outflow, lowerHalf, kSpacing);
+  const double half = vesselFillShare(sites.outflow, sites.outflowFull, lowerHalf, kSpacing, h);
   EXPECT_GT(half, 0.4);
   EXPECT_LT(half, 0.65);
-  EXPECT_EQ(vesselFillShare(sites.inflow, {}, kSpacing), 0.0);
+  EXPECT_EQ(vesselFillShare(sites.inflow, sites.inflowFull, {}, kSpacing, h), 0.0);
+}
+
+// drop() keeps each remaining site with its own colour.
+TEST(VesselSites, DropKeepsSitesWithTheirColours) {
+  const Scenario s = realSizeHeart();
+  const LvModel model = buildLvModel(s.geometry);
+  const VesselSites all = vesselSites(s, model);
+  VesselSites upper = all;
+  const Real cut = Real(0.015);
+  upper.drop([&](const Vec3& x) { return x.y() < cut; });
+  ASSERT_FALSE(upper.outflow.empty());
+  ASSERT_LT(upper.outflow.size(), all.outflow.size());
+  for (std::size_t k = 0, j = 0; k < all.outflow.size(); ++k) {
+    if (all.outflow[k].y() < cut) continue;
+    EXPECT_EQ(upper.outflow[j], all.outflow[k]);
+    EXPECT_EQ(upper.outflowFull[j], all.outflowFull[k]);
+    ++j;
+  }
 }
 
 }  // namespace
