@@ -67,9 +67,9 @@ class HeartSimulation {
   // otherwise.
   [[nodiscard]] const LumpedCirculation* lumped() const { return m_lumped ? &*m_lumped : nullptr; }
   [[nodiscard]] const VolumeDrivenWall* drivenWall() const { return m_drivenWall ? &*m_drivenWall : nullptr; }
-  // Heart and blood: the smallest share of the two vessels' lumens holding blood after the last
-  // step: of each vessel's rest-density sites (vesselSites), the share with blood within a
-  // spacing (vesselFillShare).
+  // Heart and blood: the smaller share of the two vessels' lumens holding blood after the last
+  // step: of each vessel's rest-density sites between the ends' buffers, the share whose blood
+  // colour is at least half of its value with the heart full (vesselFillShare, heart_sites.h).
   [[nodiscard]] double vesselFill() const;
   // Pressure (Pa) of each particle from the last density solve (0 for the wall), see
   // pbd::FluidSolver::pressures(); empty without blood.
