@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <unordered_map>
+#include <cstdint>
+#include <utility>
 
 #include "cardiac/flow_path.h"
 #include "pbd/sph_kernels.h"
@@ -82,33 +83,36 @@ std::vector<double> bloodColour(const std::vector<Vec3>& sites, const std::vecto
   std::vector<double> colour(sites.size(), 0.0);
   const Real h = supportRadius;
   if (sites.empty() || !(h > 0)) return colour;
-  // Blood binned in cells of edge h; a site sums over its 27 cells.
+  // Blood sorted by its cell of edge h (a key packing the three cell indices, 21 bits each, so
+  // distinct cells never share one); a site sums over its 27 cells in a fixed order, each
+  // cell's blood in index order, so the sum does not depend on anything but the input.
   auto cellOf = [h](const Vec3& p) {
-    return std::array<long, 3>{long(std::floor(p.x() / h)), long(std::floor(p.y() / h)), long(std::floor(p.z() / h))};
+    return std::array<std::int64_t, 3>{std::int64_t(std::floor(p.x() / h)), std::int64_t(std::floor(p.y() / h)),
+                                       std::int64_t(std::floor(p.z() / h))};
   };
-  auto key = [](long i, long j, long k) { return (i * 73856093L) ^ (j * 19349663L) ^ (k * 83492791L); };
-  std::unordered_multimap<long, std::size_t> cells;
-  cells.reserve(blood.size());
+  constexpr std::int64_t kBias = std::int64_t(1) << 20, kMask = (std::int64_t(1) << 21) - 1;
+  auto key = [](std::int64_t i, std::int64_t j, std::int64_t k) {
+    return (((i + kBias) & kMask) << 42) | (((j + kBias) & kMask) << 21) | ((k + kBias) & kMask);
+  };
+  std::vector<std::pair<std::int64_t, std::size_t>> cells(blood.size());
   for (std::size_t b = 0; b < blood.size(); ++b) {
     const auto c = cellOf(blood[b]);
-    cells.emplace(key(c[0], c[1], c[2]), b);
+    cells[b] = {key(c[0], c[1], c[2]), b};
   }
+  std::sort(cells.begin(), cells.end());
   const pbd::SphKernels kernels = pbd::makeSphKernels(h);
   const double volume = double(spacing) * double(spacing) * double(spacing);
   for (std::size_t s = 0; s < sites.size(); ++s) {
     const auto c = cellOf(sites[s]);
-    // Each particle once, summed in index order (the sum does not depend on the hash).
-    std::vector<std::size_t> near;
-    for (long k = -1; k <= 1; ++k)
-      for (long j = -1; j <= 1; ++j)
-        for (long i = -1; i <= 1; ++i) {
-          const auto range = cells.equal_range(key(c[0] + i, c[1] + j, c[2] + k));
-          for (auto it = range.first; it != range.second; ++it) near.push_back(it->second);
-        }
-    std::sort(near.begin(), near.end());
-    near.erase(std::unique(near.begin(), near.end()), near.end());
     double sum = 0;
-    for (std::size_t b : near) sum += double(pbd::poly6(kernels, (blood[b] - sites[s]).squaredNorm()));
+    for (std::int64_t dk = -1; dk <= 1; ++dk)
+      for (std::int64_t dj = -1; dj <= 1; ++dj)
+        for (std::int64_t di = -1; di <= 1; ++di) {
+          const std::int64_t k = key(c[0] + di, c[1] + dj, c[2] + dk);
+          auto it = std::lower_bound(cells.begin(), cells.end(), std::make_pair(k, std::size_t(0)));
+          for (; it != cells.end() && it->first == k; ++it)
+            sum += double(pbd::poly6(kernels, (blood[it->second] - sites[s]).squaredNorm()));
+        }
     colour[s] = volume * sum;
   }
   return colour;
