@@ -141,6 +141,17 @@ void findNearestWalls(const std::vector<Vec3>& vertices, const std::vector<Trian
 #pragma omp parallel num_threads(threads) if (n >= 256)
   {
     std::vector<Index> candidates;
+    // A triangle whose box touches several of p's cells is a candidate once: seen[t] holds the
+    // last point it was offered for.
+    std::vector<std::ptrdiff_t> seen(triangles.size(), -1);
+    auto offer = [&](std::size_t cell, std::ptrdiff_t point) {
+      for (std::size_t k = bins.start[cell]; k < bins.start[cell + 1]; ++k) {
+        const Index t = bins.ids[k];
+        if (seen[t] == point) continue;
+        seen[t] = point;
+        candidates.push_back(t);
+      }
+    };
 #pragma omp for schedule(static)
     for (std::ptrdiff_t i = 0; i < n; ++i) {
       const Vec3& p = points[std::size_t(i)];
@@ -148,19 +159,14 @@ void findNearestWalls(const std::vector<Vec3>& vertices, const std::vector<Trian
       // Farther than reach from every triangle's box (blood parked away from the walls).
       if ((p - p.cwiseMax(bins.lo).cwiseMin(bins.hi)).squaredNorm() > reach * reach) continue;
       // p's own cell first (its nearest triangle is likely there, and then the boxes of most
-      // others are farther), then the cells of the box p +- reach; repeats are harmless.
+      // others are farther), then the cells of the box p +- reach.
       const auto own = bins.cellOf(p);
-      const std::size_t ownCell = bins.index(own[0], own[1], own[2]);
-      candidates.assign(bins.ids.begin() + std::ptrdiff_t(bins.start[ownCell]),
-                        bins.ids.begin() + std::ptrdiff_t(bins.start[ownCell + 1]));
+      candidates.clear();
+      offer(bins.index(own[0], own[1], own[2]), i);
       const auto a = bins.cellOf(p - Vec3::Constant(reach)), b = bins.cellOf(p + Vec3::Constant(reach));
       for (int k = a[2]; k <= b[2]; ++k)
         for (int j = a[1]; j <= b[1]; ++j)
-          for (int c = a[0]; c <= b[0]; ++c) {
-            const std::size_t cell = bins.index(c, j, k);
-            candidates.insert(candidates.end(), bins.ids.begin() + std::ptrdiff_t(bins.start[cell]),
-                              bins.ids.begin() + std::ptrdiff_t(bins.start[cell + 1]));
-          }
+          for (int c = a[0]; c <= b[0]; ++c) offer(bins.index(c, j, k), i);
       out[std::size_t(i)] = nearestOf(vertices, triangles, candidates, p, reach, &bins.boxes);
     }
   }
