@@ -123,23 +123,15 @@ void BloodLoop::enter(pbd::Particles& particles, Index first, const Vec3& site, 
 std::size_t BloodLoop::reenter(pbd::Particles& particles, Index first) {
   if (m_queue.empty()) return 0;
   // Blood near the inflow vessel's far end: the sites must be clear of it, and re-entering
-  // particles take its mean velocity (they join the moving column). The same pass finds
-  // where each parked particle is now (the set may have been reordered since it was parked).
-  // Blood is created after the wall and only reordered among itself, so its ids are
-  // [first, end) in some order.
+  // particles take its mean velocity (they join the moving column).
   const Orifice& mitral = m_path.mitral;
   const Real near = m_path.inflowTop - Real(m_inletLayers + 1) * m_spacing;
-  const Index firstId = first;
+  locateParked(particles, first);
   m_occupied.clear();
-  m_parkedAt.assign(particles.size() - first, kFreeSlot);
   Vec3 velocity = Vec3::Zero();
   for (std::size_t i = first; i < particles.size(); ++i) {
-    if (!particles.active(i)) {
-      m_parkedAt[particles.id[i] - firstId] = Index(i);
-      continue;
-    }
     const Vec3& x = particles.position[i];
-    if (x.y() < near || mitral.radial(x) > mitral.radius + m_spacing) continue;
+    if (!particles.active(i) || x.y() < near || mitral.radial(x) > mitral.radius + m_spacing) continue;
     m_occupied.push_back(x);
     velocity += particles.velocity[i];
   }

@@ -1,12 +1,10 @@
 #include "cardiac/heart_sites.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdint>
-#include <utility>
 
 #include "cardiac/flow_path.h"
+#include "pbd/cell_grid.h"
 #include "pbd/sph_kernels.h"
 
 namespace hs::cardiac {
@@ -82,37 +80,30 @@ std::vector<double> bloodColour(const std::vector<Vec3>& sites, const std::vecto
                                 Real supportRadius) {
   std::vector<double> colour(sites.size(), 0.0);
   const Real h = supportRadius;
-  if (sites.empty() || !(h > 0)) return colour;
-  // Blood sorted by its cell of edge h (a key packing the three cell indices, 21 bits each, so
-  // distinct cells never share one); a site sums over its 27 cells in a fixed order, each
-  // cell's blood in index order, so the sum does not depend on anything but the input.
-  auto cellOf = [h](const Vec3& p) {
-    return std::array<std::int64_t, 3>{std::int64_t(std::floor(p.x() / h)), std::int64_t(std::floor(p.y() / h)),
-                                       std::int64_t(std::floor(p.z() / h))};
-  };
-  constexpr std::int64_t kBias = std::int64_t(1) << 20, kMask = (std::int64_t(1) << 21) - 1;
-  auto key = [](std::int64_t i, std::int64_t j, std::int64_t k) {
-    return (((i + kBias) & kMask) << 42) | (((j + kBias) & kMask) << 21) | ((k + kBias) & kMask);
-  };
-  std::vector<std::pair<std::int64_t, std::size_t>> cells(blood.size());
-  for (std::size_t b = 0; b < blood.size(); ++b) {
-    const auto c = cellOf(blood[b]);
-    cells[b] = {key(c[0], c[1], c[2]), b};
+  if (sites.empty() || blood.empty() || !(h > 0)) return colour;
+  // The blood binned in cells of edge h over its box (the engine's CellGrid); a site sums over
+  // the cells of its box +- h, in the grid's fixed order, so the sum depends on the input alone.
+  Vec3 lo = blood.front(), hi = lo;
+  for (const Vec3& x : blood) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
   }
-  std::sort(cells.begin(), cells.end());
+  pbd::CellIndexing cells;
+  cells.coverWithin({double(lo[0]), double(lo[1]), double(lo[2])}, {double(hi[0]), double(hi[1]), double(hi[2])},
+                    double(h), 8.0 * double(blood.size()) + 64, 1.001, 1e15);
+  pbd::CellGrid grid;
+  const bool binned = grid.bin(blood.size(), cells.cellCount(), 1, [&](std::size_t b, auto&& emit) {
+    std::size_t cell = 0;
+    if (cells.cellOf(blood[b], cell)) emit(cell);
+  });
+  if (!binned) return colour;
   const pbd::SphKernels kernels = pbd::makeSphKernels(h);
   const double volume = double(spacing) * double(spacing) * double(spacing);
   for (std::size_t s = 0; s < sites.size(); ++s) {
-    const auto c = cellOf(sites[s]);
+    pbd::CellBox r;
+    if (!cells.cellRange(sites[s] - Vec3::Constant(h), sites[s] + Vec3::Constant(h), r)) continue;
     double sum = 0;
-    for (std::int64_t dk = -1; dk <= 1; ++dk)
-      for (std::int64_t dj = -1; dj <= 1; ++dj)
-        for (std::int64_t di = -1; di <= 1; ++di) {
-          const std::int64_t k = key(c[0] + di, c[1] + dj, c[2] + dk);
-          auto it = std::lower_bound(cells.begin(), cells.end(), std::make_pair(k, std::size_t(0)));
-          for (; it != cells.end() && it->first == k; ++it)
-            sum += double(pbd::poly6(kernels, (blood[it->second] - sites[s]).squaredNorm()));
-        }
+    grid.forEachItem(cells, r, [&](Index b) { sum += double(pbd::poly6(kernels, (blood[b] - sites[s]).squaredNorm())); });
     colour[s] = volume * sum;
   }
   return colour;

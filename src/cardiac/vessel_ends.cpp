@@ -32,8 +32,12 @@ void VesselEnds::setFlows(double mitralFlow, double aorticFlow, double descentRa
   m_lumpedOutflowSpeed = Real(aorticFlow / double(m_outflowArea) - descentRate);
 }
 
+bool VesselEnds::inInflowBuffer(const Vec3& x) const {
+  return x.y() > m_path.inflowTop - m_depth && m_path.mitral.radial(x) < m_path.mitral.radius + m_spacing;
+}
+
 bool VesselEnds::inBuffer(const Vec3& x) const {
-  return (x.y() > m_path.inflowTop - m_depth && m_path.mitral.radial(x) < m_path.mitral.radius + m_spacing) ||
+  return inInflowBuffer(x) ||
          (x.y() > m_path.outflowTop - m_depth && m_path.aortic.radial(x) < m_path.aortic.radius + m_spacing);
 }
 
@@ -74,8 +78,7 @@ void VesselEnds::drive(pbd::Particles& particles, Index first, Real dt) {
   for (std::size_t i = first; i < particles.size(); ++i) {
     const Vec3& x = particles.position[i];
     if (!particles.active(i) || !inBuffer(x)) continue;
-    const bool inflow = x.y() > m_path.inflowTop - m_depth && m_path.mitral.radial(x) < m_path.mitral.radius + m_spacing;
-    const Vec3 target = x + (inflow ? inflowMove : outflowMove);
+    const Vec3 target = x + (inInflowBuffer(x) ? inflowMove : outflowMove);
     particles.predicted[i] = target;
     m_inPlug[i] = 1;
     m_plugSlot[i] = Index(m_plug.size());

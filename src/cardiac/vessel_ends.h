@@ -43,6 +43,7 @@ class VesselEnds {
   [[nodiscard]] double outflowOwed() const { return m_owed; }
 
  private:
+  [[nodiscard]] bool inInflowBuffer(const Vec3& x) const;
   [[nodiscard]] Real outflowPlugSpeed(const pbd::Particles& particles, Index first, Real dt);
   [[nodiscard]] Vec3 plugHeight(const Vec3& p, std::size_t k) const;
 

@@ -1,10 +1,13 @@
 #include "pbd/wall_density.h"
 
+#include "pbd/cell_grid.h"
+
 #include <algorithm>
 #include <array>
 #include <limits>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace hs::pbd {
 namespace {
@@ -77,58 +80,11 @@ WallProximity nearestOf(const std::vector<Vec3>& x, const std::vector<Triangle>&
   return {d, (p - closest) / d};
 }
 
-// Triangles binned by the cells their bounding boxes touch (cell edge `cell`).
-struct TriangleBins {
-  Vec3 lo, hi;  // the triangles' bounding box
-  Real cell;
-  std::array<int, 3> dims{};
-  std::vector<std::size_t> start;  // per cell, offsets into ids (one more than cells)
-  std::vector<Index> ids;
-  std::vector<std::array<Vec3, 2>> boxes;  // per triangle: lo, hi
-
-  [[nodiscard]] std::array<int, 3> cellOf(const Vec3& p) const {
-    std::array<int, 3> c{};
-    for (int a = 0; a < 3; ++a) c[a] = std::clamp(int(std::floor((p[a] - lo[a]) / cell)), 0, dims[a] - 1);
-    return c;
-  }
-  [[nodiscard]] std::size_t index(int i, int j, int k) const {
-    return (std::size_t(k) * std::size_t(dims[1]) + std::size_t(j)) * std::size_t(dims[0]) + std::size_t(i);
-  }
-};
-
-TriangleBins binTriangles(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles, Real cell) {
-  TriangleBins bins;
-  bins.cell = cell;
-  Vec3 lo = Vec3::Constant(std::numeric_limits<Real>::max()), hi = -lo;
-  for (const Triangle& t : triangles)
-    for (Index v : t) {
-      lo = lo.cwiseMin(x[v]);
-      hi = hi.cwiseMax(x[v]);
-    }
-  bins.lo = lo;
-  bins.hi = hi;
-  for (int a = 0; a < 3; ++a) bins.dims[a] = std::max(1, int(std::ceil((hi[a] - lo[a]) / cell)) + 1);
-  const std::size_t cells = std::size_t(bins.dims[0]) * std::size_t(bins.dims[1]) * std::size_t(bins.dims[2]);
-  // Two passes: count, then fill (counting sort), each triangle in every cell its box touches.
-  std::vector<std::size_t> count(cells + 1, 0);
-  bins.boxes.resize(triangles.size());
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    const Triangle& v = triangles[t];
-    bins.boxes[t] = {x[v[0]].cwiseMin(x[v[1]]).cwiseMin(x[v[2]]), x[v[0]].cwiseMax(x[v[1]]).cwiseMax(x[v[2]])};
-  }
-  auto forCells = [&](std::size_t t, auto&& visit) {
-    const auto a = bins.cellOf(bins.boxes[t][0]), b = bins.cellOf(bins.boxes[t][1]);
-    for (int k = a[2]; k <= b[2]; ++k)
-      for (int j = a[1]; j <= b[1]; ++j)
-        for (int i = a[0]; i <= b[0]; ++i) visit(bins.index(i, j, k));
-  };
-  for (std::size_t t = 0; t < triangles.size(); ++t) forCells(t, [&](std::size_t c) { ++count[c + 1]; });
-  for (std::size_t c = 0; c < cells; ++c) count[c + 1] += count[c];
-  bins.start = count;
-  bins.ids.resize(count[cells]);
-  for (std::size_t t = 0; t < triangles.size(); ++t) forCells(t, [&](std::size_t c) { bins.ids[count[c]++] = Index(t); });
-  return bins;
-}
+// Cell coordinates along an axis are capped (a grid this large is never built: the cells are
+// grown first, see kMaxCellsPerTriangle).
+constexpr double kMaxCoord = 1e15;
+// The triangles' grid has at most this many cells per triangle (plus a few for tiny surfaces).
+constexpr double kMaxCellsPerTriangle = 64;
 
 }  // namespace
 
@@ -136,7 +92,27 @@ void findNearestWalls(const std::vector<Vec3>& vertices, const std::vector<Trian
                       std::span<const Vec3> points, Real reach, std::vector<WallProximity>& out, int threads) {
   out.assign(points.size(), WallProximity{});
   if (triangles.empty()) return;
-  const TriangleBins bins = binTriangles(vertices, triangles, reach);
+  // The triangles binned by the cells their boxes touch (the engine's CellGrid), cells of edge
+  // `reach` over the surface's box: a point's nearest triangle within reach is in the cells of
+  // the box p +- reach.
+  std::vector<std::array<Vec3, 2>> boxes(triangles.size());
+  Vec3 lo = Vec3::Constant(std::numeric_limits<Real>::max()), hi = -lo;
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const Triangle& v = triangles[t];
+    boxes[t] = {vertices[v[0]].cwiseMin(vertices[v[1]]).cwiseMin(vertices[v[2]]),
+                vertices[v[0]].cwiseMax(vertices[v[1]]).cwiseMax(vertices[v[2]])};
+    lo = lo.cwiseMin(boxes[t][0]);
+    hi = hi.cwiseMax(boxes[t][1]);
+  }
+  CellIndexing cells;
+  cells.coverWithin({double(lo[0]), double(lo[1]), double(lo[2])}, {double(hi[0]), double(hi[1]), double(hi[2])},
+                    double(reach), kMaxCellsPerTriangle * double(triangles.size()) + 64, 1.001, kMaxCoord);
+  CellGrid grid;
+  const bool binned = grid.bin(triangles.size(), cells.cellCount(), threads, [&](std::size_t t, auto&& emit) {
+    CellBox r;
+    if (cells.cellRange(boxes[t][0], boxes[t][1], r)) cells.forEachCell(r, [&](std::size_t c, auto, auto, auto) { emit(c); });
+  });
+  if (!binned) throw std::length_error("findNearestWalls: too many triangle entries for the cell grid");
   const auto n = std::ptrdiff_t(points.size());
 #pragma omp parallel num_threads(threads) if (n >= 256)
   {
@@ -144,30 +120,27 @@ void findNearestWalls(const std::vector<Vec3>& vertices, const std::vector<Trian
     // A triangle whose box touches several of p's cells is a candidate once: seen[t] holds the
     // last point it was offered for.
     std::vector<std::ptrdiff_t> seen(triangles.size(), -1);
-    auto offer = [&](std::size_t cell, std::ptrdiff_t point) {
-      for (std::size_t k = bins.start[cell]; k < bins.start[cell + 1]; ++k) {
-        const Index t = bins.ids[k];
-        if (seen[t] == point) continue;
-        seen[t] = point;
-        candidates.push_back(t);
-      }
+    auto offer = [&](Index t, std::ptrdiff_t point) {
+      if (seen[t] == point) return;
+      seen[t] = point;
+      candidates.push_back(t);
     };
 #pragma omp for schedule(static)
     for (std::ptrdiff_t i = 0; i < n; ++i) {
       const Vec3& p = points[std::size_t(i)];
       if (!p.allFinite()) continue;
       // Farther than reach from every triangle's box (blood parked away from the walls).
-      if ((p - p.cwiseMax(bins.lo).cwiseMin(bins.hi)).squaredNorm() > reach * reach) continue;
+      if ((p - p.cwiseMax(lo).cwiseMin(hi)).squaredNorm() > reach * reach) continue;
       // p's own cell first (its nearest triangle is likely there, and then the boxes of most
       // others are farther), then the cells of the box p +- reach.
-      const auto own = bins.cellOf(p);
       candidates.clear();
-      offer(bins.index(own[0], own[1], own[2]), i);
-      const auto a = bins.cellOf(p - Vec3::Constant(reach)), b = bins.cellOf(p + Vec3::Constant(reach));
-      for (int k = a[2]; k <= b[2]; ++k)
-        for (int j = a[1]; j <= b[1]; ++j)
-          for (int c = a[0]; c <= b[0]; ++c) offer(bins.index(c, j, k), i);
-      out[std::size_t(i)] = nearestOf(vertices, triangles, candidates, p, reach, &bins.boxes);
+      std::size_t own = 0;
+      if (cells.cellOf(p, own))
+        for (Index e = grid.begin(own); e < grid.end(own); ++e) offer(grid.item(e), i);
+      CellBox r;
+      if (cells.cellRange(p - Vec3::Constant(reach), p + Vec3::Constant(reach), r))
+        grid.forEachItem(cells, r, [&](Index t) { offer(t, i); });
+      out[std::size_t(i)] = nearestOf(vertices, triangles, candidates, p, reach, &boxes);
     }
   }
 }
