@@ -227,7 +227,9 @@ class ViewerApp {
     m_scroll = 0;
 
     const std::vector<KeyPress> presses = m_keys.take();
-    if (io.WantCaptureKeyboard) return;  // typed into a field of the panel
+    // Typed into a field of the panel, or meant for an open list (Esc closing the scenario list
+    // must not quit).
+    if (io.WantCaptureKeyboard || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;
     if (applyKeys(presses, m_controls, m_region.available())) glfwSetWindowShouldClose(m_window.handle, GLFW_TRUE);
   }
 
