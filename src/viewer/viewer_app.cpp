@@ -23,6 +23,7 @@
 #include "render/scene.h"
 #include "viewer/camera_controller.h"
 #include "viewer/circulation_history.h"
+#include "viewer/lesson_panel.h"
 #include "viewer/pacing.h"
 #include "viewer/plot_history.h"
 #include "viewer/region_editor.h"
@@ -59,6 +60,7 @@ class ViewerApp {
     m_imgui = std::make_unique<ImGuiSession>(m_window.handle);
     m_renderer = std::make_unique<render::Renderer>();
     m_controls.scenarioIndex = scenarioIndex(options.builtinName);
+    if (options.lesson) m_lesson = std::make_unique<LessonPlayer>(*options.lesson, options.frames > 0);
     startScenario(m_baseScenario);
   }
 
@@ -66,7 +68,10 @@ class ViewerApp {
     m_lastFrame = Clock::now();
     std::vector<double> frameSeconds;
     for (int frame = 0; !glfwWindowShouldClose(m_window.handle); ++frame) {
-      const bool last = m_options.frames > 0 && frame + 1 >= m_options.frames;
+      // A scripted lesson ends with its last step: one more frame, the final screenshot.
+      const bool lessonDone = m_lesson && m_lesson->scripted() && m_lesson->finished();
+      const bool last = m_options.frames > 0 && (frame + 1 >= m_options.frames || lessonDone);
+      if (last && m_lesson && !lessonDone) reportUnfinishedLesson();
       const auto start = Clock::now();
       drawFrame(last && !m_options.screenshot.empty() ? m_options.screenshot : std::string());
       if (m_options.frames > 0) frameSeconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
@@ -103,6 +108,8 @@ class ViewerApp {
   int m_dragButton = -1;  // GLFW mouse button of a drag that began over the scene
   double m_lastX = 0, m_lastY = 0;
   int m_screenshotCount = 0;
+  std::unique_ptr<LessonPlayer> m_lesson;  // with --lesson
+  LessonRequests m_lessonRequests;         // from the lesson window, for the next frame
   SimulationRunner m_runner;  // last, so destroyed first: its thread stops before the app goes
 
   // The position of a built-in scenario in the preset list; -1 for any other name.
@@ -165,6 +172,17 @@ class ViewerApp {
     return true;
   }
 
+  // The lesson window's width while it is shown: the heart is framed to its right.
+  float lessonWidth(int windowWidth) const {
+    if (!m_lesson || m_lesson->closed()) return 0;
+    return lessonPanelWidth(float(windowWidth) - kPanelWidth - rightPanelWidth());
+  }
+
+  void reportUnfinishedLesson() const {
+    std::fprintf(stderr, "heartsim: the lesson stopped at step %d of %d when the %d frames ran out (give more --frames)\n",
+                 m_lesson->stepIndex() + 1, m_lesson->stepCount(), m_options.frames);
+  }
+
   // The pump panel's width, when it is shown (with a heart).
   float rightPanelWidth() const { return m_status.hasHeart ? kPumpPanelWidth : 0; }
 
@@ -178,7 +196,7 @@ class ViewerApp {
     int w = 0, h = 0;
     glfwGetWindowSize(m_window.handle, &w, &h);
     m_framedStrip = stripHeight(h);
-    frameView(*m_camera, view, {kPanelWidth, float(w) - rightPanelWidth(), m_framedStrip}, w, h);
+    frameView(*m_camera, view, {kPanelWidth + lessonWidth(w), float(w) - rightPanelWidth(), m_framedStrip}, w, h);
   }
 
   // The circulation panel shown, hidden or resized: the heart moves into the space left,
@@ -337,6 +355,8 @@ class ViewerApp {
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     handleInput();
+    // The lesson's next action goes into the controls as the panel's would, for applyRequests.
+    if (m_lesson) m_lesson->frame(m_lessonRequests, m_status, m_scenarios, m_controls);
     applyRequests();
     // The panel's display settings of the last frame: the panels are drawn below, from the
     // status this exchange brings.
@@ -360,6 +380,8 @@ class ViewerApp {
       drawCirculationPanel(m_status.circulation, m_circulation, kPanelWidth, float(w) - rightPanelWidth(), h);
     drawHelpWindow(m_controls.showHelp, w, h);
     if (m_status.hasHeart) drawBrushOutline(m_controls.region);
+    if (m_lesson)
+      drawLessonPanel(*m_lesson, m_lessonRequests, kPanelWidth, 0, lessonWidth(w), float(h) - stripHeight(h));
     ImGui::Render();
 
     if (fbw > 0 && fbh > 0) {
@@ -370,6 +392,8 @@ class ViewerApp {
                        int(std::ceil((double(w) - rightPanelWidth()) * pixels)));
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       if (!captureTo.empty()) saveScreenshot(captureTo, fbw, fbh);
+      if (m_lesson && m_lesson->screenshotStep() > 0 && !m_options.screenshot.empty())
+        saveScreenshot(stepScreenshotPath(m_options.screenshot, m_lesson->screenshotStep()), fbw, fbh);
       if (m_controls.screenshotRequested) {
         try {
           saveScreenshot(nextScreenshotName(), fbw, fbh);
