@@ -71,7 +71,9 @@ class ViewerApp {
       // A scripted lesson ends with its last step: one more frame, the final screenshot.
       const bool lessonDone = m_lesson && m_lesson->scripted() && m_lesson->finished();
       const bool last = m_options.frames > 0 && (frame + 1 >= m_options.frames || lessonDone);
-      if (last && m_lesson && !lessonDone) reportUnfinishedLesson();
+      if (last && m_lesson && !lessonDone)
+        std::fprintf(stderr, "heartsim: the lesson stopped at step %d of %d when the %d frames ran out\n",
+                     m_lesson->stepIndex() + 1, m_lesson->stepCount(), m_options.frames);
       const auto start = Clock::now();
       drawFrame(last && !m_options.screenshot.empty() ? m_options.screenshot : std::string());
       if (m_options.frames > 0) frameSeconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
@@ -176,11 +178,6 @@ class ViewerApp {
   float lessonWidth(int windowWidth) const {
     if (!m_lesson || m_lesson->closed()) return 0;
     return lessonPanelWidth(float(windowWidth) - kPanelWidth - rightPanelWidth());
-  }
-
-  void reportUnfinishedLesson() const {
-    std::fprintf(stderr, "heartsim: the lesson stopped at step %d of %d when the %d frames ran out (give more --frames)\n",
-                 m_lesson->stepIndex() + 1, m_lesson->stepCount(), m_options.frames);
   }
 
   // The pump panel's width, when it is shown (with a heart).

@@ -50,9 +50,7 @@ TEST(LessonCli, UnknownKeyAndUnknownLessonAreExitTwo) {
 }
 
 // heart-only: no blood, the thesis's 0.08 s beat, so a beat costs a few frames.
-TEST_F(LessonUnderXvfb, ScriptedRunWritesAScreenshotPerStep) {
-  const fs::path dir = scratchDir("lesson_scripted");
-  writeFile(dir / "short.toml", R"toml([lesson]
+const char* const kShortLesson = R"toml([lesson]
 title = "Short"
 scenario = "heart-only"
 
@@ -70,7 +68,11 @@ result = "done"
 question = "Which wall still moves?"
 choices = ["lateral", "septal"]
 answer = 1
-)toml");
+)toml";
+
+TEST_F(LessonUnderXvfb, ScriptedRunWritesAScreenshotPerStep) {
+  const fs::path dir = scratchDir("lesson_scripted");
+  writeFile(dir / "short.toml", kShortLesson);
   const CliResult r = view("--lesson short.toml --frames 400 --screenshot s.png --size 800x600", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   for (const char* name : {"s_step01.png", "s_step02.png", "s.png"}) {
@@ -82,6 +84,16 @@ answer = 1
   EXPECT_FALSE(fs::exists(dir / "s_step03.png"));
   // It ended with the lesson, long before 400 frames: no "stopped at step" note.
   EXPECT_EQ(r.err.find("the lesson stopped"), std::string::npos) << r.err;
+}
+
+TEST_F(LessonUnderXvfb, TooFewFramesSaySoAndStillSaveTheLastOne) {
+  const fs::path dir = scratchDir("lesson_few_frames");
+  writeFile(dir / "short.toml", kShortLesson);
+  const CliResult r = view("--lesson short.toml --frames 2 --screenshot s.png --size 640x480", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "s.png"));
+  EXPECT_FALSE(fs::exists(dir / "s_step01.png"));
+  EXPECT_NE(r.err.find("the lesson stopped at step 1 of 2 when the 2 frames ran out"), std::string::npos) << r.err;
 }
 
 }  // namespace
