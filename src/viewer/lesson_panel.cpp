@@ -48,10 +48,9 @@ void markedChoices(const LessonPredict& predict, int chosen) {
     if (right && picked) line += "   <- your answer: right";
     else if (picked) line += "   <- your answer: wrong";
     else if (right) line += "   <- the right answer";
-    if (right || picked)
-      wrappedColoured(right ? kRightColour : kWrongColour, line);
-    else
-      ImGui::TextDisabled("%s", line.c_str());
+    const ImVec4 colour =
+        right ? kRightColour : picked ? kWrongColour : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled);
+    wrappedColoured(colour, line);
   }
 }
 
