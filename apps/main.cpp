@@ -100,6 +100,8 @@ void addViewCommand(CLI::App& app, Commands& c) {
   viewApp->add_option("--size", view.size, "Window size, WIDTHxHEIGHT pixels")->capture_default_str();
   viewApp->add_option("--frames", view.frames, "Quit after N frames (scripted use; 0 = until closed)");
   viewApp->add_option("--screenshot", view.screenshot, "Save the last frame as this PNG file");
+  viewApp->add_option("--lesson", view.lesson,
+                      "Run a lesson: a built-in (regional-wall-motion, rhythm, preload-afterload) or a .toml file");
   addThreadsOption(viewApp, view.threads,
                    "Simulation threads (default: all cores but one, which the drawing needs)");
   addSetOption(viewApp, view.overrides);

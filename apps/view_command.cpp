@@ -34,12 +34,21 @@ int viewCommand(const ViewOptions& options) {
     std::cerr << "heartsim: error: --frames: must be >= 0 (0 = until the window is closed)\n";
     return kExitBadInput;
   }
-  std::optional<cardiac::Scenario> scenario = loadScenarioOrReport(options.scenario, options.overrides);
+  std::string scenarioName = options.scenario;
+  if (!options.lesson.empty()) {
+    try {
+      viewer.lesson = viewer::loadLesson(options.lesson);
+    } catch (const viewer::LessonError& e) {
+      std::cerr << "heartsim: error: " << e.what() << '\n';
+      return kExitBadInput;
+    }
+    scenarioName = viewer.lesson->scenario;  // a lesson starts where its file says
+  }
+  std::optional<cardiac::Scenario> scenario = loadScenarioOrReport(scenarioName, options.overrides);
   if (!scenario) return kExitBadInput;
   viewer.scenario = *scenario;
   const std::vector<std::string> builtins = io::builtinScenarioNames();
-  if (std::find(builtins.begin(), builtins.end(), options.scenario) != builtins.end())
-    viewer.builtinName = options.scenario;
+  if (std::find(builtins.begin(), builtins.end(), scenarioName) != builtins.end()) viewer.builtinName = scenarioName;
   viewer.frames = options.frames;
   viewer.screenshot = options.screenshot;
   // The simulation runs in its own thread beside the drawing: by default it leaves one core to
@@ -52,7 +61,7 @@ int viewCommand(const ViewOptions& options) {
     std::cerr << "heartsim: error: " << e.what() << '\n';
     return kExitFailure;
   } catch (const std::invalid_argument& e) {
-    std::cerr << "heartsim: error: " << options.scenario << ": " << e.what() << '\n';
+    std::cerr << "heartsim: error: " << scenarioName << ": " << e.what() << '\n';
     return kExitBadInput;
   } catch (const std::runtime_error& e) {
     std::cerr << "heartsim: error: " << e.what() << '\n';

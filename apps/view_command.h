@@ -14,9 +14,12 @@ struct ViewOptions {
   int frames = 0;                      // > 0: quit after N frames
   std::string screenshot;              // save the last frame as PNG
   int threads = 0;                     // 0 = all cores but one (left to the drawing)
+  std::string lesson;                  // --lesson NAME|FILE: run a lesson (docs/lessons.md)
 };
 
-// Exit codes: 0 closed; 2 bad option or scenario (one line); 1 no display (one line saying
+// With a lesson, the viewer starts on the lesson's scenario; with --frames it plays the lesson
+// by itself and, with --screenshot, saves one picture per step beside the last.
+// Exit codes: 0 closed; 2 bad option, scenario or lesson file (one line); 1 no display (one line saying
 // that `heartsim render` works without one) or a screenshot that cannot be written.
 int viewCommand(const ViewOptions& options);
 

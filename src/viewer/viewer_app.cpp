@@ -24,6 +24,7 @@
 #include "viewer/camera_controller.h"
 #include "viewer/circulation_history.h"
 #include "viewer/help_window.h"
+#include "viewer/lesson_panel.h"
 #include "viewer/pacing.h"
 #include "viewer/plot_history.h"
 #include "viewer/region_editor.h"
@@ -68,6 +69,7 @@ class ViewerApp {
     m_imgui = std::make_unique<ImGuiSession>(m_window.handle);
     m_renderer = std::make_unique<render::Renderer>();
     m_controls.scenarioIndex = scenarioIndex(options.builtinName);
+    if (options.lesson) m_lesson = std::make_unique<LessonPlayer>(*options.lesson, options.frames > 0);
     startScenario(m_baseScenario);
   }
 
@@ -75,7 +77,12 @@ class ViewerApp {
     m_lastFrame = Clock::now();
     std::vector<double> frameSeconds;
     for (int frame = 0; !glfwWindowShouldClose(m_window.handle); ++frame) {
-      const bool last = m_options.frames > 0 && frame + 1 >= m_options.frames;
+      // A scripted lesson ends with its last step: one more frame, the final screenshot.
+      const bool lessonDone = m_lesson && m_lesson->scripted() && m_lesson->finished();
+      const bool last = m_options.frames > 0 && (frame + 1 >= m_options.frames || lessonDone);
+      if (last && m_lesson && !lessonDone)
+        std::fprintf(stderr, "heartsim: the lesson stopped at step %d of %d when the %d frames ran out\n",
+                     m_lesson->stepIndex() + 1, m_lesson->stepCount(), m_options.frames);
       const auto start = Clock::now();
       drawFrame(last && !m_options.screenshot.empty() ? m_options.screenshot : std::string());
       if (m_options.frames > 0) frameSeconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
@@ -115,6 +122,8 @@ class ViewerApp {
   KeyEvents m_keys;                // pressed since the last frame
   Toasts m_toasts;                 // messages shown in the scene
   std::vector<SceneLabel> m_labels;  // the anatomy's names, where they are this frame
+  std::unique_ptr<LessonPlayer> m_lesson;  // with --lesson
+  LessonRequests m_lessonRequests;         // from the lesson window, for the next frame
   SimulationRunner m_runner;  // last, so destroyed first: its thread stops before the app goes
 
   // The position of a built-in scenario in the preset list; -1 for any other name.
@@ -177,6 +186,12 @@ class ViewerApp {
     return true;
   }
 
+  // The lesson window's width while it is shown: the heart is framed to its right.
+  float lessonWidth(int windowWidth) const {
+    if (!m_lesson || m_lesson->closed()) return 0;
+    return lessonPanelWidth(float(windowWidth) - kPanelWidth - rightPanelWidth());
+  }
+
   // The pump panel's width, when it is shown (with a heart).
   float rightPanelWidth() const { return m_status.hasHeart ? kPumpPanelWidth : 0; }
 
@@ -190,7 +205,7 @@ class ViewerApp {
     int w = 0, h = 0;
     glfwGetWindowSize(m_window.handle, &w, &h);
     m_framedStrip = stripHeight(h);
-    frameView(*m_camera, view, {kPanelWidth, float(w) - rightPanelWidth(), m_framedStrip}, w, h);
+    frameView(*m_camera, view, {kPanelWidth + lessonWidth(w), float(w) - rightPanelWidth(), m_framedStrip}, w, h);
   }
 
   // The circulation panel shown, hidden or resized: the heart moves into the space left,
@@ -370,6 +385,8 @@ class ViewerApp {
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     handleInput();
+    // The lesson's next action goes into the controls as the panel's would, for applyRequests.
+    if (m_lesson) m_lesson->frame(m_lessonRequests, m_status, m_scenarios, m_controls);
     applyRequests();
     // The panel's display settings of the last frame: the panels are drawn below, from the
     // status this exchange brings.
@@ -393,12 +410,14 @@ class ViewerApp {
     drawColourKey(m_status, kPanelWidth, float(h) - stripHeight(h));
     if (m_controls.showCirculation)
       drawCirculationPanel(m_status.circulation, m_circulation, kPanelWidth, float(w) - rightPanelWidth(), h);
-    const SceneArea area{kPanelWidth, float(w) - rightPanelWidth(), stripHeight(h)};
+    const SceneArea area{kPanelWidth + lessonWidth(w), float(w) - rightPanelWidth(), stripHeight(h)};
     drawSceneLabels(m_labels, m_camera->camera(), w, h, area);
     postMessage();
     drawToasts(m_toasts.visible(glfwGetTime()), area);
     drawHelpWindow(m_controls.showHelp, w, h);
     if (m_status.hasHeart) drawBrushOutline(m_controls.region);
+    if (m_lesson)
+      drawLessonPanel(*m_lesson, m_lessonRequests, kPanelWidth, 0, lessonWidth(w), float(h) - stripHeight(h));
     ImGui::Render();
 
     if (fbw > 0 && fbh > 0) {
@@ -409,6 +428,8 @@ class ViewerApp {
                        int(std::ceil((double(w) - rightPanelWidth()) * pixels)));
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       if (!captureTo.empty()) saveScreenshot(captureTo, fbw, fbh);
+      if (m_lesson && m_lesson->screenshotStep() > 0 && !m_options.screenshot.empty())
+        saveScreenshot(stepScreenshotPath(m_options.screenshot, m_lesson->screenshotStep()), fbw, fbh);
       if (m_controls.screenshotRequested) {
         try {
           saveScreenshot(nextScreenshotName(), fbw, fbh);

@@ -3,11 +3,13 @@
 // the scene drawn by the same render::Renderer as `heartsim render`, Dear ImGui panels (the
 // controls on the left, the heart as a pump on the right), and the simulation stepped at
 // real-time pace in its own thread (simulation_runner.h, docs/viewer.md).
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "cardiac/scenario.h"
+#include "viewer/lesson.h"
 
 namespace hs::viewer {
 
@@ -23,6 +25,7 @@ struct ViewerOptions {
   int frames = 0;                  // > 0: quit after this many frames (scripted use, tests)
   std::string screenshot;          // non-empty: save the last frame there as PNG
   int threads = 1;                 // simulation worker threads
+  std::optional<Lesson> lesson;    // a lesson to run (lesson.h); scripted when frames > 0
 };
 
 // Opens the window and runs until it is closed (or `frames` have been drawn). Throws
