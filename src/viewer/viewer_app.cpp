@@ -23,9 +23,12 @@
 #include "render/scene.h"
 #include "viewer/camera_controller.h"
 #include "viewer/circulation_history.h"
+#include "viewer/compare_window.h"
 #include "viewer/pacing.h"
+#include "viewer/plot_axes.h"
 #include "viewer/plot_history.h"
 #include "viewer/region_editor.h"
+#include "viewer/run_comparison.h"
 #include "viewer/scene_framing.h"
 #include "viewer/simulation_runner.h"
 #include "viewer/ui_panel.h"
@@ -92,6 +95,9 @@ class ViewerApp {
   RegionEditor m_region;
   PlotHistory m_history;
   CirculationHistory m_circulation;  // the lumped circulation's last beats (circulation panel)
+  RunComparison m_runs;              // this run and the one before the last restart
+  PlotAxes m_axes;                   // the pump plots' fixed axes, set anew for each run
+  bool m_axesFresh = true;           // a run started: its first samples set m_axes
   float m_framedStrip = 0;           // the circulation panel's height the camera is framed for
   std::vector<BrushDab> m_dabs;  // painted this frame, applied at the frame's access
   bool m_sentPlaying = true;     // what the simulation thread was last told
@@ -148,7 +154,9 @@ class ViewerApp {
 
   // From t = 0 with the configured scenario; false (and a message) when it is rejected and a
   // simulation already runs, which then goes on.
-  bool restart() {
+  // `change`: what this restart changed ("region applied"), for the "before" label; "" for a
+  // new scenario.
+  bool restart(const std::string& change = "") {
     try {
       m_runner.start(configuredScenario(m_baseScenario, m_controls, m_region));
     } catch (const std::invalid_argument& e) {
@@ -160,6 +168,8 @@ class ViewerApp {
     m_runningBlood = m_controls.blood;
     m_runningCirculation = m_controls.circulation;
     m_status.message.clear();
+    m_runs.restart(m_baseScenario.name + (change.empty() ? "" : ", " + change), m_history, m_circulation);
+    m_axesFresh = true;
     m_history.clear();
     m_circulation.clear();
     return true;
@@ -235,7 +245,14 @@ class ViewerApp {
       }
     } else if (regionApplied || c.resetRequested || c.cycleChanged || c.blood.changed || c.circulation.changed) {
       // A rejected setting goes back to what runs, so that Reset restarts what is shown.
-      const bool restarted = restart();
+      std::string change;
+      const auto add = [&](const char* what) { change += (change.empty() ? "" : ", ") + std::string(what); };
+      if (regionApplied) add("region applied");
+      if (c.cycleChanged) add(c.cycleEnabled ? "cycle settings changed" : "cycle off");
+      if (c.blood.changed) add("blood settings changed");
+      if (c.circulation.changed) add("circulation settings changed");
+      if (c.resetRequested && change.empty()) add("Reset");
+      const bool restarted = restart(change);
       if (!restarted && c.blood.changed) c.blood = m_runningBlood, m_status.message += " (blood settings put back)";
       if (!restarted && c.circulation.changed)
         c.circulation = m_runningCirculation, m_status.message += " (circulation settings put back)";
@@ -280,6 +297,10 @@ class ViewerApp {
       const cardiac::HeartSimulation& sim = *s.sim;
       for (const BrushDab& dab : m_dabs) m_region.paint(sim, dab.query, dab.erase, c.region);
       for (const PumpSample& sample : s.newSamples) m_history.push(sample);
+      if (m_axesFresh && !s.newSamples.empty())  // a new run: its own axes, room for the grey curve
+        m_axes = PlotAxes(m_status.pump.scale, s.newSamples.front().cavity, m_runs.previousCurve()),
+        m_axesFresh = false;
+      holdNewSamples(m_axes, m_history, s.newSamples.size());
       s.newSamples.clear();
       if (!s.message.empty()) m_status.message = s.message, s.message.clear();
       m_status.realTimeFactor = s.paceFactor;
@@ -287,6 +308,9 @@ class ViewerApp {
       readStatus(s, m_status);
       if (const cardiac::CirculationRecorder* recorder = s.monitor->circulation())
         m_circulation.update(recorder->samples(), recorder->beatStarts());
+      m_runs.update(m_status.pump.beats.recent, m_status.pump.scale, m_status.circulation.lumped);
+      m_status.pump.lumped = m_status.circulation.lumped;
+      m_status.pump.axes = m_axes;
       m_status.bloodColour = c.bloodColour;
       m_region.fillStatus(m_status.region, sim.scenario().cycle.enabled);
       scene = render::buildScene(sim, options);
@@ -352,12 +376,14 @@ class ViewerApp {
     glfwGetWindowSize(m_window.handle, &w, &h);
     glfwGetFramebufferSize(m_window.handle, &fbw, &fbh);
     drawControlPanel(m_controls, m_status, m_scenarios, h);
-    drawPumpPanel(m_controls.pump, m_status.pump, m_history, w, h);
+    drawPumpPanel(m_controls.pump, m_status.pump, m_history, m_runs, w, h);
     followStrip(h);
     drawStatusOverlay(m_status, float(w) - rightPanelWidth());
     drawColourKey(m_status, kPanelWidth, float(h) - stripHeight(h));
     if (m_controls.showCirculation)
-      drawCirculationPanel(m_status.circulation, m_circulation, kPanelWidth, float(w) - rightPanelWidth(), h);
+      drawCirculationPanel(m_status.circulation, m_circulation, kPanelWidth, float(w) - rightPanelWidth(), h,
+                           m_runs.previousLoop());
+    drawCompareWindow(m_controls.pump.showCompare, m_runs, m_history, m_circulation, m_status.pump.axes);
     drawHelpWindow(m_controls.showHelp, w, h);
     if (m_status.hasHeart) drawBrushOutline(m_controls.region);
     ImGui::Render();
