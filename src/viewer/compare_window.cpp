@@ -85,9 +85,10 @@ void numbers(const RunComparison& runs) {
   ImGui::EndTable();
 }
 
+// The runs' names are in the table's heads above: the legend names the columns.
 void legend(ImDrawList* draw, ImVec2 at, const RunComparison& runs) {
-  float x = drawLegendEntry(draw, at, kNowColour, ("now: " + runs.current().label).c_str());
-  if (runs.previous()) drawLegendEntry(draw, ImVec2(x, at.y), kBeforeLine, ("before: " + runs.previous()->label).c_str());
+  const float x = drawLegendEntry(draw, at, kNowColour, "now");
+  if (runs.previous()) drawLegendEntry(draw, ImVec2(x, at.y), kBeforeLine, "before");
 }
 
 // Both runs' cavity volume over their last complete beat, from the start of systole.

@@ -140,9 +140,12 @@ void drawSeries(ImDrawList* draw, const Frame& f, const PlotHistory& history, st
 // The run before the restart: its last beat, in grey, under each of this run's beats.
 void drawBefore(ImDrawList* draw, const Frame& f, const PlotSpec& spec, const PlotHistory& history,
                 std::span<const PumpSample> before) {
-  if (before.size() < 2) return;
+  if (before.size() < 2 || history.empty()) return;
   const std::vector<double> onsets = beatOnsets(history);
-  for (const OverlaySpan& span : overlaySpans(onsets, before.back().time, f.t0, f.t1))
+  // Up to now: the two runs are compared at the same point of their beats, not ahead of it.
+  const double now = history.newest().time;
+  for (OverlaySpan span : overlaySpans(onsets, before.back().time, f.t0, now)) {
+    span.end = std::min(span.end, now);
     for (const PlotSeries& s : spec.series) {
       std::vector<ImVec2> points;
       for (const PumpSample& sample : before) {
@@ -156,6 +159,7 @@ void drawBefore(ImDrawList* draw, const Frame& f, const PlotSpec& spec, const Pl
       }
       if (points.size() >= 2) draw->AddPolyline(points.data(), int(points.size()), kBeforeColour, 0, 1.2f);
     }
+  }
 }
 
 void hoverTooltip(ImDrawList* draw, const Frame& f, const PlotSpec& spec, const PlotHistory& history) {

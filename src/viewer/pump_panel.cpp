@@ -179,7 +179,7 @@ void beatTable(PumpControls& c, const PumpStatus& s, const RunComparison& runs) 
   ImGui::TableSetColumnIndex(0);
   ImGui::TextDisabled("mean of");
   ImGui::TableSetColumnIndex(1);
-  ImGui::TextDisabled("1 beat");
+  ImGui::TextDisabled(b.last ? "1 beat" : "-");
   ImGui::TableSetColumnIndex(2);
   ImGui::TextDisabled("%s", now ? beatsText(now->count).c_str() : "-");
   if (previous) {

@@ -149,10 +149,13 @@ void drawPressureVolumeLoop(const CirculationHistory& history,
   const std::size_t shown = std::min(beats.size(), kLoopAlpha.size());
   const std::size_t from = shown > 0 ? beats[beats.size() - shown].begin : samples.size();
   // ... and the grey loop of the run before, so it is not cut off.
-  std::vector<CirculationSample> drawn(samples.begin() + std::ptrdiff_t(from), samples.end());
-  drawn.insert(drawn.end(), before.begin(), before.end());
-  const LoopAxes axes =
-      loopAxes(drawn, relations, ticksFitting(f.x1 - f.x0, 42), ticksFitting(f.y1 - f.y0, line * 1.8f));
+  std::vector<CirculationSample> withBefore;
+  if (!before.empty()) {
+    withBefore.assign(samples.begin() + std::ptrdiff_t(from), samples.end());
+    withBefore.insert(withBefore.end(), before.begin(), before.end());
+  }
+  const LoopAxes axes = loopAxes(before.empty() ? samples.subspan(from) : std::span(withBefore), relations,
+                                 ticksFitting(f.x1 - f.x0, 42), ticksFitting(f.y1 - f.y0, line * 1.8f));
   f.x = axes.volume, f.y = axes.pressure;
 
   draw->AddText(origin, kChartText, "Pressure-volume loop");
