@@ -98,6 +98,7 @@ void drawParticles(GLuint program, const GLuint (&buffers)[2], const Scene& scen
   const ParticleCloud& cloud = scene.particles;
   useProgram(program, camera);
   setFloat(program, "uRadius", cloud.radius);
+  setFloat(program, "uOpacity", cloud.opacity);
   setLight(program, scene.light);
   setClip(program, scene.clip, scene.clip.enabled && scene.clip.clipParticles, camera.view);
   upload(buffers[0], cloud.centres);
@@ -106,7 +107,19 @@ void drawParticles(GLuint program, const GLuint (&buffers)[2], const Scene& scen
                          : std::vector<Vec3f>(cloud.centres.size(), Vec3f(0.2f, 0.4f, 0.9f)));
   attribute(0, buffers[0], 1);
   attribute(1, buffers[1], 1);
+  const bool seeThrough = cloud.opacity < 1;
+  if (seeThrough) {
+    // Blended over the opaque wall already drawn, writing no depth, so each sphere lets what
+    // is behind it (other blood, the far wall) show through.
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+  }
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(cloud.centres.size()));
+  if (seeThrough) {
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+  }
   glVertexAttribDivisor(0, 0);
   glVertexAttribDivisor(1, 0);
   glDisableVertexAttribArray(0);
@@ -169,10 +182,14 @@ void Renderer::draw(const Scene& scene, const Camera& camera, int width, int hei
   for (GLuint i = 0; i < 3; ++i) glDisableVertexAttribArray(i);
   drawBackground(g.background, scene);
   if (!scene.lines.points.empty()) drawLines(g.lines, g.buffers[5], scene.lines, matrices);
-  if (!scene.particles.centres.empty())
+  // See-through blood goes over the wall; opaque blood first, so a see-through wall blends over it.
+  const bool bloodLast = scene.particles.opacity < 1;
+  if (!scene.particles.centres.empty() && !bloodLast)
     drawParticles(g.particles, {g.buffers[3], g.buffers[4]}, scene, matrices);
   if (!scene.wall.positions.empty())
     drawWall(g.wall, {g.buffers[0], g.buffers[1], g.buffers[2]}, scene, matrices);
+  if (!scene.particles.centres.empty() && bloodLast)
+    drawParticles(g.particles, {g.buffers[3], g.buffers[4]}, scene, matrices);
   glBindVertexArray(0);
   glUseProgram(0);
   if (strip) glDisable(GL_SCISSOR_TEST);

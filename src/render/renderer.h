@@ -23,6 +23,7 @@ struct WallMesh {
 struct ParticleCloud {
   std::vector<Vec3f> centres, colours;
   float radius = 0.01f;
+  float opacity = 1;  // < 1: see-through, drawn over the wall without hiding it
 };
 
 // Line segments as point pairs.

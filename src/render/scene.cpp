@@ -28,8 +28,10 @@ std::vector<Vec3f> boxEdges(const Vec3f& lo, const Vec3f& hi) {
 // Vertex normals that stay smooth across gentle bends and keep creases (the wall's rim, the
 // vessel ends): each triangle corner averages the area-weighted normals of the triangles at
 // its vertex that lie within ~50 degrees of its own.
-// beating: per model vertex, nonzero = drawn in beatingColour (may be empty).
-void addWall(const cardiac::HeartSimulation& sim, const std::vector<std::uint8_t>& beating, WallMesh& wall) {
+// beating: per model vertex, nonzero = drawn in beatingColour; outOfStep: nonzero = drawn in
+// outOfStepColour, over the beating colour (either may be empty).
+void addWall(const cardiac::HeartSimulation& sim, const std::vector<std::uint8_t>& beating,
+             const std::vector<std::uint8_t>& outOfStep, WallMesh& wall) {
   const auto& model = sim.model();
   const auto& x = sim.particles().position;
   const std::size_t n = model.surface.size();
@@ -53,7 +55,9 @@ void addWall(const cardiac::HeartSimulation& sim, const std::vector<std::uint8_t
       wall.positions.push_back(toVec3f(x[v]));
       wall.normals.push_back(sum.squaredNorm() > 0 ? sum.normalized() : own);
       const Vec3f colour = regionColour(model.region[v]);
-      wall.colours.push_back(v < beating.size() && beating[v] ? beatingColour(colour) : colour);
+      wall.colours.push_back(v < outOfStep.size() && outOfStep[v] ? outOfStepColour(colour)
+                             : v < beating.size() && beating[v] ? beatingColour(colour)
+                                                                : colour);
     }
   }
 }
@@ -75,6 +79,26 @@ Vec3f beatingColour(const Vec3f& base) {
   // gives (0.93, 0.53, 0.17), orange in light and in shade alike.
   const Vec3f orange(1.0f, 0.66f, 0.10f);
   return base / 3 + orange * (2.0f / 3);
+}
+
+Vec3f outOfStepColour(const Vec3f& base) {
+  // Two thirds of the way to violet: apart from the red wall, the orange region and the pale
+  // vessels, and from every blood colour but the origin key's ventricle violet, which is
+  // bluer and only seen inside.
+  const Vec3f violet(0.55f, 0.25f, 0.85f);
+  return base / 3 + violet * (2.0f / 3);
+}
+
+std::vector<std::uint8_t> outOfStepRegion(const cardiac::HeartSimulation& sim) {
+  const cardiac::CycleSettings& cycle = sim.scenario().cycle;
+  if (!sim.hasHeart() || !cycle.enabled || cycle.pattern != cardiac::BeatPattern::Inconsistent) return {};
+  const cardiac::LvModel& model = sim.model();
+  std::vector<std::uint8_t> flags(model.mesh.vertices.size(), 0);
+  for (std::size_t v = 0; v < flags.size(); ++v)
+    flags[v] = model.region[v] == cardiac::Region::Myocardium &&
+               std::find(cycle.inconsistentSegments.begin(), cycle.inconsistentSegments.end(),
+                         int(model.segment[v])) != cycle.inconsistentSegments.end();
+  return flags;
 }
 
 std::vector<std::uint8_t> chosenBeatingRegion(const cardiac::HeartSimulation& sim) {
@@ -177,7 +201,8 @@ Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& option
   scene.bounds = sceneBounds(sim);
   const auto& s = sim.scenario();
   if (sim.hasHeart()) {
-    addWall(sim, options.beating ? *options.beating : chosenBeatingRegion(sim), scene.wall);
+    addWall(sim, options.beating ? *options.beating : chosenBeatingRegion(sim),
+            options.markOutOfStep ? outOfStepRegion(sim) : std::vector<std::uint8_t>(), scene.wall);
     scene.wall.opacity = std::clamp(options.wallOpacity, 0.05f, 1.0f);
   }
   if (options.clip) {
@@ -190,6 +215,7 @@ Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& option
     const double scaleMax = colourScaleMax(options, s);
     const auto& p = sim.particles();
     scene.particles.radius = float(s.blood.radius);
+    scene.particles.opacity = std::clamp(options.bloodOpacity, 0.05f, 1.0f);
     const std::vector<pbd::Real>& pressure = sim.pressures();
     for (std::size_t i = sim.firstBloodParticle(); i < p.size(); ++i) {
       if (!sim.bloodActive(pbd::Index(i))) continue;  // parked outside the model (circulation.h)

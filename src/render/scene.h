@@ -31,6 +31,11 @@ struct SceneOptions {
   // sphere) while its cycle is on; a scenario where the whole myocardium beats singles nothing
   // out, so its pictures look as they always did. The viewer passes its live selection.
   std::optional<std::vector<std::uint8_t>> beating;
+  // The segments the inconsistent pattern beats out of step drawn in outOfStepColour.
+  bool markOutOfStep = true;
+  // < 1: the blood drawn see-through over the wall (the viewer while a region is chosen, so
+  // the region on the far wall shows through the blood in front of it).
+  float bloodOpacity = 1;
 };
 
 // Region colours (linear RGB in [0, 1]): myocardium red-pink, base plate and vessels lighter.
@@ -38,6 +43,11 @@ Vec3f regionColour(cardiac::Region region);
 // A beating vertex's colour: the wall's colour turned orange, distinct from the red
 // myocardium at rest and from the pale vessels.
 Vec3f beatingColour(const Vec3f& base);
+// A vertex that beats out of step (the inconsistent pattern): the wall's colour turned violet.
+Vec3f outOfStepColour(const Vec3f& base);
+// Per model vertex, 1 = in a segment the inconsistent pattern beats out of step; empty for the
+// other patterns, without a heart or with the cycle off.
+std::vector<std::uint8_t> outOfStepRegion(const cardiac::HeartSimulation& sim);
 // Per model vertex, 1 = in the region the scenario chose to beat; empty when it chose none
 // (the whole myocardium beats), has no heart, or its cycle is off.
 std::vector<std::uint8_t> chosenBeatingRegion(const cardiac::HeartSimulation& sim);

@@ -104,7 +104,7 @@ void main() {
 inline constexpr const char* kParticleFs = R"(#version 330 core
 in vec3 vViewPos, vCentre, vColour;
 uniform mat4 uProjection;
-uniform float uRadius;
+uniform float uRadius, uOpacity;
 uniform vec4 uClip;
 uniform bool uClipOn;
 out vec4 colour;
@@ -119,7 +119,7 @@ void main() {
   if (uClipOn && dot(uClip.xyz, hit) + uClip.w > 0.0) discard;
   vec4 clipPos = uProjection * vec4(hit, 1.0);
   gl_FragDepth = clipPos.z / clipPos.w * 0.5 + 0.5;
-  colour = vec4(shade(vColour, (hit - vCentre) / uRadius, -d), 1.0);
+  colour = vec4(shade(vColour, (hit - vCentre) / uRadius, -d), uOpacity);
 }
 )";
 

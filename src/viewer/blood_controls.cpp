@@ -73,7 +73,14 @@ void applyBloodControls(const BloodControls& c, cardiac::Scenario& scenario) {
   scenario.circulation.valveMode = c.valveMode;
 }
 
-void drawBloodSection(BloodControls& c, bool hasHeart) {
+void drawBloodSection(BloodControls& c, bool hasHeart, bool wallDriven) {
+  if (wallDriven) {
+    ImGui::TextDisabled("cannot change EF or the pressures (?)");
+    tooltip(
+        "Here the circulation model moves the wall and computes the pressures; the wall does not feel "
+        "the blood. These settings change how the blood moves and looks (its speed, the jets), not the "
+        "ejection fraction, the volumes or the pressures.");
+  }
   const double minViscosity = 0.0005, maxViscosity = 0.5;
   ImGui::SliderScalar("viscosity", ImGuiDataType_Double, &c.viscosity, &minViscosity, &maxViscosity,
                       "%.4f Pa s", ImGuiSliderFlags_Logarithmic);
@@ -85,8 +92,10 @@ void drawBloodSection(BloodControls& c, bool hasHeart) {
   ImGui::SliderInt("particles", &c.particles, 100, 20000, "%d", ImGuiSliderFlags_Logarithmic);
   if (ImGui::IsItemDeactivatedAfterEdit()) c.changed = c.particlesEdited = true;
   tooltip(
-      "Blood particles, each a small parcel of blood. More: finer flow, slower simulation.\nApplied on "
-      "release, restarting from t = 0. A start region too small for them is reported below.");
+      "Blood particles, each a small parcel of blood of a fixed size. More: a slower simulation.\nWhere "
+      "the blood starts filling the heart and vessels, they hold a fixed number: more than that wait "
+      "in the body outside the model and enter through the inflow, so the picture barely changes; "
+      "fewer leave the heart part-empty. Applied on release, restarting from t = 0.");
   if (!hasHeart) return;
   const std::span<const Choice<Start>> starts(kStarts);
   choiceCombo("blood start", starts, starts.first(kOfferedStarts), c.start, c.changed);

@@ -24,7 +24,9 @@ BloodControls bloodControlsFrom(const cardiac::Scenario& scenario, int particleC
 // Writes the controls into the scenario's settings.
 void applyBloodControls(const BloodControls& controls, cardiac::Scenario& scenario);
 
-// hasHeart: the start, coupling and valve controls need the heart.
-void drawBloodSection(BloodControls& controls, bool hasHeart);
+// hasHeart: the start, coupling and valve controls need the heart; wallDriven: the lumped
+// circulation moves the wall, so the blood's settings cannot change EF or the pressures (the
+// section says so).
+void drawBloodSection(BloodControls& controls, bool hasHeart, bool wallDriven);
 
 }  // namespace hs::viewer

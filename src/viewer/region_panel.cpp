@@ -100,6 +100,24 @@ void drawBullseye(RegionControls& controls, const RegionStatus& status, float di
   for (int k = 0; k < 4; ++k)
     draw->AddLine(at(kBullseyeApexRadius, 45.0f + 90.0f * float(k)),
                   at(kBullseyeApicalRadius, 45.0f + 90.0f * float(k)), ink, 1.2f);
+  // Segments beating out of step: a thick violet border, the colour they have on the heart.
+  const ImU32 violet = colour(render::outOfStepColour(render::regionColour(cardiac::Region::Myocardium)));
+  for (int s = 1; s <= 17; ++s) {
+    if (!status.outOfStep[std::size_t(s)]) continue;
+    const BullseyeSector sector = bullseyeSector(s);
+    if (s == 17) {
+      draw->AddCircle(ImVec2(cx, cy), sector.outerRadius * radius - 2, violet, 48, 4);
+      continue;
+    }
+    draw->PathClear();
+    const int steps = int(std::ceil((sector.endDeg - sector.startDeg) / 5));
+    const float in = sector.innerRadius + 0.03f, out = sector.outerRadius - 0.03f;
+    for (int i = 0; i <= steps; ++i)
+      draw->PathLineTo(at(out, sector.startDeg + (sector.endDeg - sector.startDeg) * float(i) / float(steps)));
+    for (int i = steps; i >= 0; --i)
+      draw->PathLineTo(at(in, sector.startDeg + (sector.endDeg - sector.startDeg) * float(i) / float(steps)));
+    draw->PathStroke(violet, ImDrawFlags_Closed, 4);
+  }
   for (int s = 1; s <= 17; ++s) {
     float x = 0, y = 0;
     bullseyeLabelPosition(s, x, y);
@@ -114,8 +132,9 @@ void drawBullseye(RegionControls& controls, const RegionStatus& status, float di
 
   if (hovered > 0)
     ImGui::SetTooltip(
-        "%s: %s\nclick to %s", ahaSegmentName(hovered).c_str(),
+        "%s: %s%s\nclick to %s", ahaSegmentName(hovered).c_str(),
         stateText(status.segments[std::size_t(hovered)]),
+        status.outOfStep[std::size_t(hovered)] ? ", out of step with the rest" : "",
         status.segments[std::size_t(hovered)] == SegmentState::Full ? "let it rest" : "make it beat");
   ImGui::SetCursorScreenPos(origin);
   ImGui::Dummy(ImVec2(ImGui::GetContentRegionAvail().x, diameter + 2 * lineHeight + 4));
@@ -123,6 +142,12 @@ void drawBullseye(RegionControls& controls, const RegionStatus& status, float di
 
 void drawRegionSection(RegionControls& c, const RegionStatus& s) {
   drawBullseye(c, s, kBullseyeDiameter);
+  if (std::find(s.outOfStep.begin(), s.outOfStep.end(), true) != s.outOfStep.end()) {
+    const render::Vec3f v = render::outOfStepColour(render::regionColour(cardiac::Region::Myocardium));
+    ImGui::TextColored(ImVec4(v.x(), v.y(), v.z(), 1), "violet: beats out of step");
+    tooltip("These segments beat at their own rate and phase (the inconsistent pattern); they are "
+            "violet on the heart too");
+  }
   ImGui::Text("%zu of %zu wall vertices beat", s.count, s.selectable);
   tooltip(
       "Vertices of the myocardium chosen to contract in systole (thesis 4.3.3); the base plate and "
@@ -135,7 +160,7 @@ void drawRegionSection(RegionControls& c, const RegionStatus& s) {
       "While painting, the left button does not orbit: pan with the right button, or leave paint mode");
   ImGui::SameLine();
   ImGui::Checkbox("show on heart", &c.showRegion);
-  tooltip("Draw the chosen region orange on the heart");
+  tooltip("Draw the chosen region orange on the heart, the blood see-through so that it shows");
   char radius[64];
   if (s.brushWorldRadius >= 0.1)
     std::snprintf(radius, sizeof radius, "%%.0f px = %.2f m", s.brushWorldRadius);

@@ -24,6 +24,7 @@ struct RegionControls {
 
 struct RegionStatus {
   std::array<SegmentState, 18> segments{};  // [1..17]
+  std::array<bool, 18> outOfStep{};         // [1..17]: beats out of step (the inconsistent pattern)
   std::size_t count = 0, selectable = 0;    // chosen and choosable wall vertices
   bool pending = false;                     // the selection differs from the one the simulation runs
   bool cycleEnabled = true;                 // off: nothing beats, whatever is chosen

@@ -22,13 +22,20 @@ constexpr double kLumpedSecondsKept = 20;  // s of simulated time
 std::vector<ScenarioChoice> builtinScenarioChoices() {
   std::vector<ScenarioChoice> choices;
   for (const std::string& name : io::builtinScenarioNames()) {
-    std::string description;
+    ScenarioChoice choice{name, "", ScenarioGroup::HumanHeart};
     try {
-      description = io::loadScenario(name).description;
+      const cardiac::Scenario scenario = io::loadScenario(name);
+      choice.description = scenario.description;
+      // The thesis's models are metres across; a human left ventricle a few centimetres.
+      constexpr double kHumanScaleMax = 0.2;  // m, the cavity's radius
+      if (!scenario.heart)
+        choice.group = ScenarioGroup::BloodOnly;
+      else if (double(scenario.geometry.endoRadius) > kHumanScaleMax)
+        choice.group = ScenarioGroup::ThesisModel;
     } catch (const std::exception& e) {
-      description = std::string("cannot be loaded: ") + e.what();
+      choice.description = std::string("cannot be loaded: ") + e.what();
     }
-    choices.push_back({name, description});
+    choices.push_back(choice);
   }
   return choices;
 }

@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -59,33 +60,59 @@ void originLegend() {
 }
 
 void simulationSection(ViewerControls& c, const ViewerStatus& s) {
-  if (ImGui::Button(c.playing ? "Pause" : "Play", ImVec2(70, 0))) c.playing = !c.playing;
+  if (ImGui::Button(c.playing ? "Pause" : "Play", ImVec2(54, 0))) c.playing = !c.playing;
   tooltip("Run or pause the simulation (Space)");
   ImGui::SameLine();
-  if (ImGui::Button("Step", ImVec2(60, 0))) c.stepRequested = true;
+  if (ImGui::Button("Step", ImVec2(42, 0))) c.stepRequested = true;
   char stepTip[96];
   std::snprintf(stepTip, sizeof stepTip, "Advance one time step of %g ms and pause (S)", s.dt * 1000);
   tooltip(stepTip);
   ImGui::SameLine();
-  if (ImGui::Button("Reset", ImVec2(60, 0))) c.resetRequested = true;
+  if (ImGui::Button("Reset", ImVec2(46, 0))) c.resetRequested = true;
   tooltip("Restart the scenario from t = 0 (Backspace)");
+  ImGui::SameLine();
+  if (ImGui::Button("Picture")) c.screenshotRequested = true;
+  tooltip("Save the window as a PNG in the working directory (P); the message in the scene gives its path");
+  ImGui::SameLine();
+  if (ImGui::Button("Help")) c.showHelp = !c.showHelp;
+  tooltip("What the numbers, colours and controls mean; mouse and keys (H or F1)");
   ImGui::SliderFloat("speed", &c.speed, 0.01f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
   tooltip("Simulated seconds per second of wall-clock time (1x = real time)");
+  if (const std::string shortfall = speedShortfall(double(c.speed), s); !shortfall.empty()) {
+    ImGui::TextColored(ImVec4(0.75f, 0.35f, 0.0f, 1), "%s", shortfall.c_str());
+    tooltip("The simulation computes as fast as this machine allows and still falls short of the "
+            "speed asked: the heart is shown in slow motion, every step of it computed. Fewer blood "
+            "particles (Blood section) run faster.");
+  }
+}
+
+// A folding section of the panel; opening one closes the one open before.
+bool section(const char* title, PanelSection id, PanelSection& open) {
+  ImGui::SetNextItemOpen(open == id, ImGuiCond_Always);
+  const bool shown = ImGui::CollapsingHeader(title);
+  if (ImGui::IsItemToggledOpen()) open = shown ? id : PanelSection::None;
+  return shown;
 }
 
 void scenarioSection(ViewerControls& c, const ViewerStatus& s, const std::vector<ScenarioChoice>& scenarios) {
   const char* preview = c.scenarioIndex >= 0 && c.scenarioIndex < int(scenarios.size())
                             ? scenarios[std::size_t(c.scenarioIndex)].name.c_str()
                             : s.scenarioName.c_str();
-  if (ImGui::BeginCombo("scenario", preview)) {
-    for (int i = 0; i < int(scenarios.size()); ++i) {
-      const ScenarioChoice& choice = scenarios[std::size_t(i)];
-      const bool selected = i == c.scenarioIndex;
-      if (ImGui::Selectable(choice.name.c_str(), selected) && !selected) {
-        c.scenarioIndex = i;
-        c.scenarioChanged = true;
+  if (ImGui::BeginCombo("scenario", preview, ImGuiComboFlags_HeightLarge)) {
+    for (const ScenarioGroup group : {ScenarioGroup::HumanHeart, ScenarioGroup::ThesisModel, ScenarioGroup::BloodOnly}) {
+      ImGui::TextDisabled("%s", scenarioGroupTitle(group));
+      for (int i = 0; i < int(scenarios.size()); ++i) {
+        const ScenarioChoice& choice = scenarios[std::size_t(i)];
+        if (choice.group != group) continue;
+        const bool selected = i == c.scenarioIndex;
+        ImGui::Indent(8);
+        if (ImGui::Selectable(choice.name.c_str(), selected) && !selected) {
+          c.scenarioIndex = i;
+          c.scenarioChanged = true;
+        }
+        ImGui::Unindent(8);
+        if (!choice.description.empty()) tooltip(choice.description.c_str());
       }
-      if (!choice.description.empty()) tooltip(choice.description.c_str());
     }
     ImGui::EndCombo();
   }
@@ -130,6 +157,9 @@ void scenarioSection(ViewerControls& c, const ViewerStatus& s, const std::vector
 
 void displaySection(ViewerControls& c, const ViewerStatus& s) {
   if (s.hasHeart) {
+    ImGui::Checkbox("labels and flow arrows", &c.showLabels);
+    tooltip("Name the inflow (from the left atrium), the mitral and aortic valves, the aorta and the "
+            "apex on the heart, with arrows the way blood flows forward (N)");
     ImGui::Checkbox("clipping plane", &c.clip);
     tooltip("Cut the wall open to see into the cavity (removes what lies in front of the plane z = const)");
     ImGui::BeginDisabled(!c.clip);
@@ -162,19 +192,23 @@ void displaySection(ViewerControls& c, const ViewerStatus& s) {
   }
   if (ImGui::SmallButton("reset")) c.resetCameraRequested = true;
   tooltip("Back to the front view, framing the heart (R)");
-  if (ImGui::Button("Screenshot")) c.screenshotRequested = true;
-  tooltip("Save the window as a PNG in the working directory (P)");
-  ImGui::SameLine();
-  if (ImGui::Button("Help")) c.showHelp = !c.showHelp;
-  tooltip("Mouse and keys (H or F1)");
 }
 
 }  // namespace
 
-std::string realTimeWarning(const ViewerStatus& status) {
+const char* scenarioGroupTitle(ScenarioGroup group) {
+  switch (group) {
+    case ScenarioGroup::HumanHeart: return "Human-size hearts";
+    case ScenarioGroup::ThesisModel: return "The thesis's models (metres across, not a human heart)";
+    case ScenarioGroup::BloodOnly: return "Blood alone (no heart)";
+  }
+  return "";
+}
+
+std::string speedShortfall(double asked, const ViewerStatus& status) {
   if (!status.behind) return "";
-  char text[64];
-  std::snprintf(text, sizeof text, "running at %.2gx real time", status.realTimeFactor);
+  char text[96];
+  std::snprintf(text, sizeof text, "asked %.2gx, reaching %.2gx: slow motion", asked, status.realTimeFactor);
   return text;
 }
 
@@ -182,35 +216,17 @@ void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
                       const std::vector<ScenarioChoice>& scenarios, int windowHeight) {
   beginSidePanel("heartsim", "heartsim viewer", 0, kPanelWidth, windowHeight);
   simulationSection(controls, status);
-  // Under the buttons that act on it, where it cannot be scrolled out of sight: an invalid
-  // simulation, a rejected setting, a saved screenshot.
-  if (!status.message.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.7f, 0.25f, 0.05f, 1));
-    ImGui::TextWrapped("%s", status.message.c_str());
-    ImGui::PopStyleColor();
-  }
   ImGui::Spacing();
   sectionTitle("Scenario");
   scenarioSection(controls, status, scenarios);
-  if (controls.circulation.lumped) {
-    ImGui::Spacing();
-    sectionTitle("Circulation");
+  PanelSection& open = controls.openSection;
+  if (controls.circulation.lumped && section("Circulation", PanelSection::Circulation, open))
     drawCirculationSection(controls.circulation, controls.heartRateBpm, controls.cycleChanged,
                            controls.showCirculation);
-  }
-  if (status.hasBlood) {
-    ImGui::Spacing();
-    sectionTitle("Blood");
-    drawBloodSection(controls.blood, status.hasHeart);
-  }
-  if (status.hasHeart) {
-    ImGui::Spacing();
-    sectionTitle("Beating region");
+  if (status.hasBlood && section("Blood", PanelSection::Blood, open)) drawBloodSection(controls.blood, status.hasHeart, controls.circulation.lumped);
+  if (status.hasHeart && section("Beating region", PanelSection::Region, open))
     drawRegionSection(controls.region, status.region);
-  }
-  ImGui::Spacing();
-  sectionTitle("Display");
-  displaySection(controls, status);
+  if (section("Display", PanelSection::Display, open)) displaySection(controls, status);
   endSidePanel();
 }
 
@@ -234,6 +250,13 @@ void drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge)
     ImGui::SameLine();
     ImGui::TextUnformatted("the chosen beating region");
     ImGui::TextUnformatted("light: base plate and vessels");
+    if (std::find(status.region.outOfStep.begin(), status.region.outOfStep.end(), true) !=
+        status.region.outOfStep.end()) {
+      const render::Vec3f v = render::outOfStepColour(render::regionColour(cardiac::Region::Myocardium));
+      ImGui::TextColored(ImVec4(v.x(), v.y(), v.z(), 1), "violet");
+      ImGui::SameLine();
+      ImGui::TextUnformatted("beats out of step");
+    }
   }
   if (status.hasBlood) {
     if (status.hasHeart) ImGui::Spacing();
@@ -248,9 +271,9 @@ void drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge)
   ImGui::End();
 }
 
-void drawStatusOverlay(const ViewerStatus& status, float rightEdge) {
+void drawStatusOverlay(const ViewerStatus& status, float rightEdge, float bottomEdge) {
   constexpr float kMargin = 10;
-  ImGui::SetNextWindowPos(ImVec2(rightEdge - kMargin, kMargin), ImGuiCond_Always, ImVec2(1, 0));
+  ImGui::SetNextWindowPos(ImVec2(rightEdge - kMargin, bottomEdge - kMargin), ImGuiCond_Always, ImVec2(1, 1));
   ImGui::SetNextWindowBgAlpha(0.75f);
   ImGui::Begin("status", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
@@ -265,49 +288,8 @@ void drawStatusOverlay(const ViewerStatus& status, float rightEdge) {
   else if (status.cavity >= 0)
     ImGui::Text("cavity volume: %.1f mL", status.cavity * status.pump.scale.volume);
   ImGui::Text("frame: %.1f ms (%.0f fps)", status.frameMs, status.frameMs > 0 ? 1000 / status.frameMs : 0.0);
-  if (const std::string warning = realTimeWarning(status); !warning.empty())
-    ImGui::TextColored(ImVec4(0.95f, 0.55f, 0.15f, 1), "%s", warning.c_str());
-  ImGui::End();
-}
-
-void drawHelpWindow(bool& open, int windowWidth, int windowHeight) {
-  if (!open) return;
-  ImGui::SetNextWindowPos(ImVec2(float(windowWidth) / 2 + kPanelWidth / 2, float(windowHeight) / 2),
-                          ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-  ImGui::Begin("Help: mouse and keys", &open,
-               ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
-  constexpr const char* kRows[][2] = {
-      {"left drag", "orbit around the heart"},
-      {"right or middle drag", "pan"},
-      {"wheel", "zoom"},
-      {"1 / F", "front view (anterior, from +z)"},
-      {"2 / L", "left view (from -x, septal side)"},
-      {"3", "right view (from +x, lateral side)"},
-      {"4 / T", "top view (onto the base)"},
-      {"R", "reset the camera"},
-      {"Space", "play / pause"},
-      {"S", "single step (pauses)"},
-      {"Backspace", "restart the scenario"},
-      {"P", "screenshot (PNG in the working directory)"},
-      {"B", "paint mode on / off (beating region)"},
-      {"left drag (paint mode)", "add the wall under the brush"},
-      {"Shift + left drag", "remove it (paint mode)"},
-      {"[ / ]", "smaller / larger brush"},
-      {"Enter", "apply the region (restarts from t = 0)"},
-      {"C", "PV loop and Wiggers diagram on / off (lumped circulation)"},
-      {"H / F1", "this help"},
-      {"Esc", "quit"},
-  };
-  if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
-    for (const auto& row : kRows) {
-      ImGui::TableNextRow();
-      ImGui::TableSetColumnIndex(0);
-      ImGui::TextUnformatted(row[0]);
-      ImGui::TableSetColumnIndex(1);
-      ImGui::TextUnformatted(row[1]);
-    }
-    ImGui::EndTable();
-  }
+  if (status.behind)
+    ImGui::TextColored(ImVec4(0.85f, 0.45f, 0.05f, 1), "slow motion: %.2gx real time", status.realTimeFactor);
   ImGui::End();
 }
 

@@ -17,6 +17,10 @@
 
 namespace hs::viewer {
 
+// The control panel's folding sections: one is open at a time, so that the whole panel fits a
+// 1280x800 window without scrolling (tests/viewer/test_panel_layout.cpp).
+enum class PanelSection { None, Circulation, Blood, Region, Display };
+
 // What the user set; the *Requested / *Changed flags are one-frame requests, cleared by the app.
 struct ViewerControls {
   bool playing = true;
@@ -32,6 +36,8 @@ struct ViewerControls {
   float wallOpacity = 1;
   int bloodColour = 0;  // render::BloodColour: speed, pressure, origin
   bool showHelp = false;
+  bool showLabels = true;  // the anatomy's names and the flow's arrows on the scene (N)
+  PanelSection openSection = PanelSection::Region;
   RegionControls region;  // the beating region: bull's-eye, brush, Apply
   BloodControls blood;    // viscosity, particles, start, coupling, valves (restart)
   PumpControls pump;      // the right panel's plots
@@ -64,15 +70,21 @@ struct ViewerStatus {
   double pressureMax = 1;           // Pa at the top of the pressure colour scale
   int bloodColour = 0;              // what the blood's colour shows (render::BloodColour)
   float clipMin = -1, clipMax = 1;  // range of the clipping plane's slider (m)
-  std::string message;              // last event: "saved viewer.png", "simulation became invalid ..."
+  std::string message;              // an event to show as a toast: "saved /home/a/heartsim_normal_001.png"
   RegionStatus region;
   PumpStatus pump;  // the right panel (with a heart)
   CirculationStatus circulation;  // the PV loop and Wiggers panel (lumped circulation)
 };
 
+// Where a built-in scenario sits in the preset list: the human-size hearts a student learns
+// from, the thesis's own models at their scale (metres across), and blood without a heart.
+enum class ScenarioGroup { HumanHeart, ThesisModel, BloodOnly };
+const char* scenarioGroupTitle(ScenarioGroup group);
+
 // A built-in scenario for the preset list; the description is its tooltip.
 struct ScenarioChoice {
   std::string name, description;
+  ScenarioGroup group = ScenarioGroup::HumanHeart;
 };
 
 // Width of the control panel in pixels (the camera frames the rest of the window).
@@ -80,15 +92,15 @@ inline constexpr float kPanelWidth = 300;
 
 void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
                       const std::vector<ScenarioChoice>& scenarios, int windowHeight);
-// rightEdge: the x (pixels) the corner's right side keeps to (the pump panel's left side).
-void drawStatusOverlay(const ViewerStatus& status, float rightEdge);
+// The status corner at the bottom right of the scene: rightEdge, the x (pixels) it keeps to
+// (the pump panel's left side); bottomEdge, the y it keeps above (the circulation panel's top).
+void drawStatusOverlay(const ViewerStatus& status, float rightEdge, float bottomEdge);
 // The colour key (the wall's colours, the blood's speed scale) at the bottom left of the
 // scene; leftEdge: the control panel's right side, bottomEdge: the y (pixels) it keeps above
 // (the window's height, or the circulation panel's top).
 void drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge);
-void drawHelpWindow(bool& open, int windowWidth, int windowHeight);
 
-// "running at 0.4x real time" when behind, else "".
-std::string realTimeWarning(const ViewerStatus& status);
+// "asked 4x, reaching 0.21x" when the simulation cannot keep the asked speed, else "".
+std::string speedShortfall(double asked, const ViewerStatus& status);
 
 }  // namespace hs::viewer

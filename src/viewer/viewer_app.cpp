@@ -24,14 +24,18 @@
 #include "viewer/camera_controller.h"
 #include "viewer/circulation_history.h"
 #include "viewer/compare_window.h"
+#include "viewer/help_window.h"
 #include "viewer/pacing.h"
 #include "viewer/plot_axes.h"
 #include "viewer/plot_history.h"
 #include "viewer/region_editor.h"
 #include "viewer/run_comparison.h"
 #include "viewer/scene_framing.h"
+#include "viewer/scene_labels.h"
+#include "viewer/scene_overlays.h"
 #include "viewer/simulation_runner.h"
 #include "viewer/ui_panel.h"
+#include "viewer/toasts.h"
 #include "viewer/viewer_keys.h"
 #include "viewer/viewer_window.h"
 
@@ -58,6 +62,11 @@ class ViewerApp {
     glfwSetWindowUserPointer(m_window.handle, this);
     glfwSetScrollCallback(m_window.handle, [](GLFWwindow* w, double, double dy) {
       static_cast<ViewerApp*>(glfwGetWindowUserPointer(w))->m_scroll += dy;
+    });
+    // Keys as events, so a tap between two frames is not lost (viewer_keys.h); ImGui's own
+    // callback, installed next, chains to this one.
+    glfwSetKeyCallback(m_window.handle, [](GLFWwindow* w, int key, int, int action, int mods) {
+      static_cast<ViewerApp*>(glfwGetWindowUserPointer(w))->m_keys.push(key, action, mods);
     });
     m_imgui = std::make_unique<ImGuiSession>(m_window.handle);
     m_renderer = std::make_unique<render::Renderer>();
@@ -109,6 +118,9 @@ class ViewerApp {
   int m_dragButton = -1;  // GLFW mouse button of a drag that began over the scene
   double m_lastX = 0, m_lastY = 0;
   int m_screenshotCount = 0;
+  KeyEvents m_keys;                // pressed since the last frame
+  Toasts m_toasts;                 // messages shown in the scene
+  std::vector<SceneLabel> m_labels;  // the anatomy's names, where they are this frame
   SimulationRunner m_runner;  // last, so destroyed first: its thread stops before the app goes
 
   // The position of a built-in scenario in the preset list; -1 for any other name.
@@ -224,8 +236,11 @@ class ViewerApp {
     if (!io.WantCaptureMouse && m_scroll != 0) m_camera->zoom(float(m_scroll));
     m_scroll = 0;
 
-    if (io.WantCaptureKeyboard) return;
-    if (readKeys(m_controls, m_region.available())) glfwSetWindowShouldClose(m_window.handle, GLFW_TRUE);
+    const std::vector<KeyPress> presses = m_keys.take();
+    // Typed into a field of the panel, or meant for an open list (Esc closing the scenario list
+    // must not quit).
+    if (io.WantCaptureKeyboard || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;
+    if (applyKeys(presses, m_controls, m_region.available())) glfwSetWindowShouldClose(m_window.handle, GLFW_TRUE);
   }
 
   void applyRequests() {
@@ -257,8 +272,9 @@ class ViewerApp {
       if (!restarted && c.circulation.changed)
         c.circulation = m_runningCirculation, m_status.message += " (circulation settings put back)";
       if (regionApplied && m_status.message.empty())
-        m_status.message = "beating region applied: " + std::to_string(m_region.selection().count()) +
-                           " vertices; restarted from t = 0";
+        m_status.message = "applied: " + std::to_string(m_region.selection().count()) + " of " +
+                           std::to_string(m_region.selection().selectableCount()) +
+                           " wall points beat; restarted from t = 0";
     }
     if (c.viewRequested) resetCamera(*c.viewRequested);
     if (c.resetCameraRequested) resetCamera(render::View::Front);
@@ -313,6 +329,11 @@ class ViewerApp {
       m_status.pump.axes = m_axes;
       m_status.bloodColour = c.bloodColour;
       m_region.fillStatus(m_status.region, sim.scenario().cycle.enabled);
+      const std::vector<std::uint8_t> outOfStep = render::outOfStepRegion(sim);
+      m_status.region.outOfStep.fill(false);
+      for (std::size_t v = 0; v < outOfStep.size(); ++v)
+        if (outOfStep[v]) m_status.region.outOfStep[sim.model().segment[v]] = true;
+      m_labels = m_controls.showLabels ? anatomyLabels(sim) : std::vector<SceneLabel>();
       scene = render::buildScene(sim, options);
     });
     m_dabs.clear();
@@ -330,7 +351,19 @@ class ViewerApp {
 
   void saveScreenshot(const std::string& path, int width, int height) {
     readBackBuffer(width, height).savePng(path);
-    m_status.message = "saved " + path;
+    std::error_code error;
+    const std::filesystem::path full = std::filesystem::absolute(path, error);
+    m_status.message = "picture saved: " + (error ? path : full.string());
+  }
+
+  // The status's pending message becomes a toast; a refusal or a stop is a warning.
+  void postMessage() {
+    if (m_status.message.empty()) return;
+    const std::string& text = m_status.message;
+    const bool warning = text.starts_with("cannot") || text.find("stopped") != std::string::npos ||
+                         text.find("failed") != std::string::npos || text.find("invalid") != std::string::npos;
+    m_toasts.push(text, warning ? ToastKind::Warning : ToastKind::Info, glfwGetTime());
+    m_status.message.clear();
   }
 
   std::string nextScreenshotName() {
@@ -369,6 +402,8 @@ class ViewerApp {
     options.clipZ = m_controls.clipZ;
     options.wallOpacity = m_controls.wallOpacity;
     options.beating = m_region.highlight(m_controls.region);
+    // While a region is chosen or painted, the blood lets it show through.
+    if (m_controls.region.paintMode || m_controls.region.showRegion) options.bloodOpacity = 0.3f;
     options.bloodColour = render::BloodColour(std::clamp(m_controls.bloodColour, 0, 2));
     const render::Scene scene = exchange(wallSeconds, options);
 
@@ -378,12 +413,16 @@ class ViewerApp {
     drawControlPanel(m_controls, m_status, m_scenarios, h);
     drawPumpPanel(m_controls.pump, m_status.pump, m_history, m_runs, w, h);
     followStrip(h);
-    drawStatusOverlay(m_status, float(w) - rightPanelWidth());
+    drawStatusOverlay(m_status, float(w) - rightPanelWidth(), float(h) - stripHeight(h));
     drawColourKey(m_status, kPanelWidth, float(h) - stripHeight(h));
     if (m_controls.showCirculation)
       drawCirculationPanel(m_status.circulation, m_circulation, kPanelWidth, float(w) - rightPanelWidth(), h,
                            m_runs.previousLoop());
     drawCompareWindow(m_controls.pump.showCompare, m_runs, m_history, m_circulation, m_status.pump.axes);
+    const SceneArea area{kPanelWidth, float(w) - rightPanelWidth(), stripHeight(h)};
+    drawSceneLabels(m_labels, m_camera->camera(), w, h, area);
+    postMessage();
+    drawToasts(m_toasts.visible(glfwGetTime()), area);
     drawHelpWindow(m_controls.showHelp, w, h);
     if (m_status.hasHeart) drawBrushOutline(m_controls.region);
     ImGui::Render();

@@ -218,3 +218,48 @@ TEST(Scene, RenderTintsTheChosenBeatingRegion) {
   EXPECT_TRUE(
       hs::render::chosenBeatingRegion(hs::cardiac::HeartSimulation(hs::cardiac::Scenario{}, 1)).empty());
 }
+
+// The inconsistent pattern's out-of-step segments are drawn violet, only they, and only when
+// that pattern beats; see-through blood is passed to the renderer as asked.
+TEST(Scene, OutOfStepSegmentsAreVioletOnlyInTheInconsistentPattern) {
+  hs::cardiac::Scenario scenario;  // thesis scale, the whole myocardium beats
+  scenario.cycle.pattern = hs::cardiac::BeatPattern::Inconsistent;
+  scenario.cycle.inconsistentSegments = {7, 13};
+  const hs::cardiac::HeartSimulation sim(scenario, 1);
+  const std::vector<std::uint8_t> flags = hs::render::outOfStepRegion(sim);
+  ASSERT_EQ(flags.size(), sim.model().mesh.vertices.size());
+  std::size_t marked = 0;
+  for (std::size_t v = 0; v < flags.size(); ++v) {
+    const int segment = sim.model().segment[v];
+    EXPECT_EQ(bool(flags[v]), segment == 7 || segment == 13) << "vertex " << v;
+    marked += flags[v];
+  }
+  EXPECT_GT(marked, 0u);
+  hs::render::SceneOptions options;
+  options.bloodOpacity = 0.3f;
+  const hs::render::Scene scene = hs::render::buildScene(sim, options);
+  const Vec3f violet = hs::render::outOfStepColour(hs::render::regionColour(hs::cardiac::Region::Myocardium));
+  for (std::size_t f = 0; f < sim.model().surface.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto v = sim.model().surface[f][k];
+      EXPECT_EQ(scene.wall.colours[3 * f + std::size_t(k)] == violet, bool(flags[v]));
+    }
+  options.markOutOfStep = false;
+  for (const Vec3f& c : hs::render::buildScene(sim, options).wall.colours) EXPECT_NE(c, violet);
+
+  hs::cardiac::Scenario regular = scenario;
+  regular.cycle.pattern = hs::cardiac::BeatPattern::Normal;
+  EXPECT_TRUE(hs::render::outOfStepRegion(hs::cardiac::HeartSimulation(regular, 1)).empty());
+}
+
+TEST(Scene, SeeThroughBloodIsPassedToTheRenderer) {
+  hs::cardiac::Scenario scenario;
+  scenario.blood.enabled = true;
+  const hs::cardiac::HeartSimulation sim(scenario, 1);
+  hs::render::SceneOptions options;
+  EXPECT_EQ(hs::render::buildScene(sim, options).particles.opacity, 1.0f);
+  options.bloodOpacity = 0.3f;
+  const hs::render::Scene scene = hs::render::buildScene(sim, options);
+  ASSERT_FALSE(scene.particles.centres.empty());
+  EXPECT_EQ(scene.particles.opacity, 0.3f);
+}

@@ -112,3 +112,27 @@ TEST(ViewerSimulationRunner, InvalidSimulationPausesWithWhenAndWhere) {
 
 }  // namespace
 }  // namespace hs::viewer
+
+namespace hs::viewer {
+namespace {
+
+// The preset list keeps the human-size hearts apart from the thesis's metre-scale models and
+// from blood without a heart, each group under a title that says what it is.
+TEST(ScenarioChoices, GroupTheHumanHeartsTheThesisModelsAndTheBloodAlone) {
+  const std::vector<ScenarioChoice> choices = builtinScenarioChoices();
+  const auto groupOf = [&](const std::string& name) {
+    for (const ScenarioChoice& c : choices)
+      if (c.name == name) return c.group;
+    throw std::runtime_error("no scenario " + name);
+  };
+  for (const char* name : {"normal", "irregular", "inconsistent", "aortic-stenosis", "mitral-regurgitation"})
+    EXPECT_EQ(groupOf(name), ScenarioGroup::HumanHeart) << name;
+  for (const char* name : {"paper-chamber", "paper-chamber-beating", "paper-vessel", "paper-vessel-beating", "heart-only"})
+    EXPECT_EQ(groupOf(name), ScenarioGroup::ThesisModel) << name;
+  for (const char* name : {"dam-break", "fluid-at-rest"}) EXPECT_EQ(groupOf(name), ScenarioGroup::BloodOnly) << name;
+  for (const ScenarioChoice& c : choices) EXPECT_FALSE(c.description.empty()) << c.name << " has no tooltip";
+  EXPECT_NE(std::string(scenarioGroupTitle(ScenarioGroup::ThesisModel)).find("not a human heart"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace hs::viewer

@@ -1,0 +1,10 @@
+#pragma once
+// The student's help window (H, F1, or the Help button): what each number means and its
+// normal range in an adult at rest, what the colours mean, what each control changes and what
+// it cannot change, and the mouse and keys. Needs an ImGui frame in progress.
+
+namespace hs::viewer {
+
+void drawHelpWindow(bool& open, int windowWidth, int windowHeight);
+
+}  // namespace hs::viewer

@@ -1,0 +1,81 @@
+// The anatomy's names on the scene: one for each place a student asks about, anchored where
+// that place is now (the orifices' rings, the vessels' ends, the apex), with arrows the way
+// blood flows forward, and projected where the front view shows them (inflow on the left).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "cardiac/heart_simulation.h"
+#include "io/scenario_file.h"
+#include "viewer/camera_controller.h"
+#include "viewer/scene_labels.h"
+
+namespace hs::viewer {
+namespace {
+
+using render::Vec3f;
+
+const SceneLabel& named(const std::vector<SceneLabel>& labels, const std::string& prefix) {
+  const auto found = std::find_if(labels.begin(), labels.end(),
+                                  [&](const SceneLabel& l) { return l.text.starts_with(prefix); });
+  if (found == labels.end()) throw std::runtime_error("no label " + prefix);
+  return *found;
+}
+
+TEST(SceneLabels, NameTheInflowTheValvesTheAortaAndTheApexWhereTheyAre) {
+  const cardiac::Scenario scenario;  // the thesis-scale heart
+  const cardiac::HeartSimulation sim(scenario, 1);
+  const std::vector<SceneLabel> labels = anatomyLabels(sim);
+  ASSERT_EQ(labels.size(), 5u);
+  const cardiac::FlowPath& path = sim.model().flowPath;
+  const SceneLabel& mitral = named(labels, "mitral");
+  const SceneLabel& aortic = named(labels, "aortic");
+  EXPECT_LT((mitral.anchor - path.mitral.centre.cast<float>()).norm(), 0.05f * float(path.mitral.radius));
+  EXPECT_LT((aortic.anchor - path.aortic.centre.cast<float>()).norm(), 0.05f * float(path.aortic.radius));
+  // The inflow's arrow points down its vessel into the heart, the aorta's up and out.
+  const SceneLabel& inflow = named(labels, "from the left atrium");
+  const SceneLabel& aorta = named(labels, "to the aorta");
+  EXPECT_TRUE(inflow.flowsIn);
+  EXPECT_LT(inflow.flow.y(), 0);
+  EXPECT_FALSE(aorta.flowsIn);
+  EXPECT_GT(aorta.flow.y(), 0);
+  EXPECT_LT(inflow.anchor.x(), 0) << "the inflow vessel is on the mitral side, -x";
+  EXPECT_GT(aorta.anchor.x(), 0);
+  EXPECT_GT(inflow.anchor.y(), mitral.anchor.y()) << "up its vessel, above the valve";
+  // The apex is the wall's lowest point.
+  const SceneLabel& apex = named(labels, "apex");
+  for (const auto& x : sim.particles().position) EXPECT_GE(x.y(), apex.anchor.y() - 1e-5);
+}
+
+TEST(SceneLabels, NoHeartNoLabels) {
+  const cardiac::Scenario scenario = io::loadScenario("dam-break");
+  ASSERT_FALSE(scenario.heart);
+  EXPECT_TRUE(anatomyLabels(cardiac::HeartSimulation(scenario, 1)).empty());
+}
+
+TEST(SceneLabels, TheFrontViewShowsTheInflowOnTheLeftAndNothingBehindTheEye) {
+  const cardiac::Scenario scenario;
+  const cardiac::HeartSimulation sim(scenario, 1);
+  const std::vector<SceneLabel> labels = anatomyLabels(sim);
+  render::Box bounds;
+  bounds.min = Vec3f(-3, -5, -3), bounds.max = Vec3f(3, 3, 3);
+  CameraController controller(bounds, 1);
+  controller.setView(render::View::Front);
+  const render::Camera& camera = controller.camera();
+  const ProjectedLabel mitral = projectLabel(named(labels, "mitral"), camera, 1280, 800);
+  const ProjectedLabel aortic = projectLabel(named(labels, "aortic"), camera, 1280, 800);
+  const ProjectedLabel inflow = projectLabel(named(labels, "from the left atrium"), camera, 1280, 800);
+  ASSERT_TRUE(mitral.onScreen && aortic.onScreen && inflow.onScreen);
+  EXPECT_LT(mitral.x, aortic.x);
+  // The inflow's arrow points down the screen (y grows downwards), ending at its anchor.
+  ASSERT_TRUE(inflow.hasArrow);
+  EXPECT_GT(inflow.arrowToY, inflow.arrowFromY);
+  EXPECT_NEAR(inflow.arrowToX, inflow.x, 1e-3f);
+  // A point behind the eye is not drawn.
+  SceneLabel behind = named(labels, "apex");
+  behind.anchor = camera.eye + (camera.eye - camera.target);
+  EXPECT_FALSE(projectLabel(behind, camera, 1280, 800).onScreen);
+}
+
+}  // namespace
+}  // namespace hs::viewer
