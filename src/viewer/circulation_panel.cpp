@@ -43,7 +43,8 @@ float circulationPanelHeight(int windowHeight) {
 }
 
 void drawCirculationPanel(const CirculationStatus& status, const CirculationHistory& history, float left,
-                          float right, int windowHeight) {
+                          float right, int windowHeight,
+                          std::span<const cardiac::CirculationSample> previousLoop) {
   if (!status.lumped) return;
   const float height = circulationPanelHeight(windowHeight);
   ImGui::SetNextWindowPos(ImVec2(left, float(windowHeight) - height), ImGuiCond_Always);
@@ -59,7 +60,7 @@ void drawCirculationPanel(const CirculationStatus& status, const CirculationHist
   // textbook's figure); the Wiggers diagram takes the rest of the width.
   constexpr float kGap = 18;
   const float loopWidth = std::min(avail.y * 1.1f, 0.45f * (avail.x - kGap));
-  drawPressureVolumeLoop(history, status.relations, ImVec2(loopWidth, avail.y));
+  drawPressureVolumeLoop(history, status.relations, ImVec2(loopWidth, avail.y), previousLoop);
   ImGui::SameLine(0, kGap);
   drawWiggersDiagram(history, ImVec2(avail.x - loopWidth - kGap, avail.y));
   ImGui::End();

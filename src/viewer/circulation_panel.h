@@ -8,6 +8,7 @@
 // it only reads a status; the app fills it from the simulation thread. Needs an ImGui frame in
 // progress.
 #include <optional>
+#include <span>
 
 #include "cardiac/circulation_trace.h"
 #include "cardiac/lumped_beat.h"
@@ -26,7 +27,9 @@ struct CirculationStatus {
 float circulationPanelHeight(int windowHeight);
 
 // The strip from x = left to x = right at the bottom of the window.
+// previousLoop: the run before the restart's last loop, drawn in grey (empty for none).
 void drawCirculationPanel(const CirculationStatus& status, const CirculationHistory& history, float left,
-                          float right, int windowHeight);
+                          float right, int windowHeight,
+                          std::span<const cardiac::CirculationSample> previousLoop = {});
 
 }  // namespace hs::viewer

@@ -100,8 +100,8 @@ void stepBody(const LessonPlayer& player, LessonRequests& requests) {
   }
 }
 
+// At the top of the window, so that Next can be reached however long the step's text is.
 void navigation(const LessonPlayer& player, LessonRequests& requests) {
-  ImGui::Separator();
   ImGui::BeginDisabled(!player.canGoBack());
   if (ImGui::Button("< Back")) requests.back = true;
   tooltip("The step before, with the settings the lesson had then (restarts the simulation)");
@@ -114,6 +114,11 @@ void navigation(const LessonPlayer& player, LessonRequests& requests) {
   ImGui::SameLine();
   if (ImGui::SmallButton("close")) requests.close = true;
   tooltip("Hide the lesson; the viewer goes on as it is");
+  if (!player.finished()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("step %d of %d", player.stepIndex() + 1, player.stepCount());
+  }
+  ImGui::Separator();
 }
 
 }  // namespace
@@ -131,16 +136,15 @@ void drawLessonPanel(const LessonPlayer& player, LessonRequests& requests, float
   ImGui::Begin(title.c_str(), nullptr,
                ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+  navigation(player, requests);
   if (player.finished()) {
     wrappedColoured(kTitleColour, "End of the lesson.");
     if (player.answered() > 0)
       ImGui::Text("Predictions right: %d of %d", player.rightAnswers(), player.answered());
     wrapped("The viewer goes on: change anything in the panel and watch what follows.");
   } else {
-    ImGui::TextDisabled("step %d of %d", player.stepIndex() + 1, player.stepCount());
     stepBody(player, requests);
   }
-  navigation(player, requests);
   ImGui::End();
 }
 

@@ -15,7 +15,29 @@ void PlotHistory::push(const PumpSample& sample) {
   if (m_size == m_ring.size()) grow();
   m_ring[(m_head + m_size) % m_ring.size()] = sample;
   ++m_size;
+  smoothNewest();
   dropOld();
+}
+
+double PlotHistory::smoothingSeconds() const {
+  return m_halfSteps < 0 ? m_smoothing : double(2 * m_halfSteps + 1) * m_step;
+}
+
+// A centred mean over whole steps: each step's rate is the volume that crossed in it over dt,
+// so the mean of 2 half + 1 rates is the volume that crossed in the window over its length.
+void PlotHistory::smoothNewest() {
+  if (m_halfSteps < 0 && m_size >= 2) {
+    m_step = newest().time - (*this)[m_size - 2].time;
+    m_halfSteps = m_step > 0 ? std::max(0, int(std::lround((m_smoothing / m_step - 1) / 2))) : 0;
+  }
+  if (m_halfSteps < 0) return;
+  const auto width = std::size_t(2 * m_halfSteps + 1);
+  if (m_size < width) return;
+  double mitral = 0, aortic = 0;
+  for (std::size_t i = m_size - width; i < m_size; ++i) mitral += (*this)[i].mitralRate, aortic += (*this)[i].aorticRate;
+  PumpSample& centre = at(m_size - 1 - std::size_t(m_halfSteps));
+  centre.mitralSmoothed = mitral / double(width);
+  centre.aorticSmoothed = aortic / double(width);
 }
 
 std::size_t PlotHistory::lowerBound(double time) const {

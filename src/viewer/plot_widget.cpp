@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "viewer/run_comparison.h"
+
 namespace hs::viewer {
 namespace {
 
@@ -34,13 +36,20 @@ std::string valueWithUnits(const PlotSpec& spec, double shown) {
   return text;
 }
 
+// The newest value that is known (a smoothed flow lags by half its window).
+double newestKnown(const PlotHistory& history, const PlotSeries& s) {
+  for (std::size_t i = history.size(), n = 0; i-- > 0 && n < 256; ++n)
+    if (std::isfinite(history[i].*s.value)) return history[i].*s.value;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 // Coloured swatch, label and latest value of each line, wrapped to the panel's width.
 void drawLegend(const PlotSpec& spec, const PlotHistory& history) {
   const float right = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;
   for (std::size_t i = 0; i < spec.series.size(); ++i) {
     const PlotSeries& s = spec.series[i];
     std::string text = s.label;
-    if (!history.empty()) text += " " + valueWithUnits(spec, history.newest().*s.value * spec.scale);
+    if (!history.empty()) text += " " + valueWithUnits(spec, newestKnown(history, s) * spec.scale);
     const float swatch = ImGui::GetTextLineHeight() * 0.7f;
     const float width = swatch + 4 + ImGui::CalcTextSize(text.c_str()).x;
     if (i > 0) {
@@ -91,6 +100,10 @@ void drawSeries(ImDrawList* draw, const Frame& f, const PlotHistory& history, st
   int column = std::numeric_limits<int>::min();
   std::size_t lowAt = 0, highAt = 0;
   double low = 0, high = 0;
+  auto stroke = [&] {
+    if (points.size() >= 2) draw->AddPolyline(points.data(), int(points.size()), s.colour, 0, 1.5f);
+    points.clear();
+  };
   auto flush = [&] {
     if (column == std::numeric_limits<int>::min()) return;
     const float x = float(column);
@@ -104,6 +117,12 @@ void drawSeries(ImDrawList* draw, const Frame& f, const PlotHistory& history, st
   };
   for (std::size_t i = from; i < history.size(); ++i) {
     const double v = history[i].*s.value * scale;
+    if (!std::isfinite(v)) {  // not known: a gap in the line
+      flush();
+      column = std::numeric_limits<int>::min();
+      stroke();
+      continue;
+    }
     const int c = int(std::floor(f.x(history[i].time)));
     if (c != column) {
       flush();
@@ -115,7 +134,32 @@ void drawSeries(ImDrawList* draw, const Frame& f, const PlotHistory& history, st
     }
   }
   flush();
-  if (points.size() >= 2) draw->AddPolyline(points.data(), int(points.size()), s.colour, 0, 1.5f);
+  stroke();
+}
+
+// The run before the restart: its last beat, in grey, under each of this run's beats.
+void drawBefore(ImDrawList* draw, const Frame& f, const PlotSpec& spec, const PlotHistory& history,
+                std::span<const PumpSample> before) {
+  if (before.size() < 2 || history.empty()) return;
+  const std::vector<double> onsets = beatOnsets(history);
+  // Up to now: the two runs are compared at the same point of their beats, not ahead of it.
+  const double now = history.newest().time;
+  for (OverlaySpan span : overlaySpans(onsets, before.back().time, f.t0, now)) {
+    span.end = std::min(span.end, now);
+    for (const PlotSeries& s : spec.series) {
+      std::vector<ImVec2> points;
+      for (const PumpSample& sample : before) {
+        const double t = span.start + sample.time, v = sample.*s.value * spec.scale;
+        if (t > span.end) break;
+        if (!std::isfinite(v)) continue;
+        const ImVec2 p(f.x(t), f.y(v));
+        if (!points.empty() && std::abs(p.x - points.back().x) < 0.5f && std::abs(p.y - points.back().y) < 1)
+          continue;
+        points.push_back(p);
+      }
+      if (points.size() >= 2) draw->AddPolyline(points.data(), int(points.size()), kBeforeColour, 0, 1.2f);
+    }
+  }
 }
 
 void hoverTooltip(ImDrawList* draw, const Frame& f, const PlotSpec& spec, const PlotHistory& history) {
@@ -144,9 +188,14 @@ std::string formatValue(double value) {
   return text;
 }
 
-void drawPlot(const char* id, const PlotSpec& spec, const PlotHistory& history, float height) {
+void drawPlot(const char* id, const PlotSpec& spec, const PlotHistory& history, float height,
+              std::span<const PumpSample> before) {
   ImGui::PushID(id);
   ImGui::Text("%s (%s)", spec.title, spec.unit.c_str());
+  if (!spec.note.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", spec.note.c_str());
+  }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", spec.tooltip);
   drawLegend(spec, history);
 
@@ -166,19 +215,13 @@ void drawPlot(const char* id, const PlotSpec& spec, const PlotHistory& history, 
   f.t1 = history.empty() ? window : std::max(history.newest().time, window);
   f.t0 = f.t1 - window;
   const std::size_t from = history.empty() ? 0 : std::min(history.lowerBound(f.t0), history.size() - 1);
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (const PlotSeries& s : spec.series)
-    for (std::size_t i = from > 0 ? from - 1 : 0; i < history.size(); ++i) {
-      const double v = history[i].*s.value * spec.scale;
-      lo = std::min(lo, v), hi = std::max(hi, v);
-    }
-  f.range = niceRange(history.empty() ? 0 : lo, history.empty() ? 1 : hi, spec.includeZero,
-                      std::max(2, int((f.y1 - f.y0) / (lineHeight * 1.6f))));
+  f.range = spec.range.hi > spec.range.lo ? spec.range : AxisRange{0, 1};
 
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRectFilled(ImVec2(f.x0, f.y0), ImVec2(f.x1, f.y1), IM_COL32(255, 255, 255, 255));
   drawAxes(draw, f);
   draw->PushClipRect(ImVec2(f.x0, f.y0), ImVec2(f.x1 + 1, f.y1 + 1), true);
+  drawBefore(draw, f, spec, history, before);
   for (const PlotSeries& s : spec.series)
     drawSeries(draw, f, history, from > 0 ? from - 1 : 0, s, spec.scale);
   if (history.empty()) draw->AddText(ImVec2(f.x0 + 8, f.y0 + 4), IM_COL32(120, 120, 130, 255), "no data yet");

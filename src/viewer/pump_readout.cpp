@@ -9,6 +9,7 @@ ClinicalFigures clinicalFigures(const cardiac::BeatSummary& beat, const VolumeSc
   f.strokeVolume = beat.strokeVolume() * scale.volume;
   f.ejectionFraction = beat.ejectionFraction() * 100;
   f.regurgitantVolume = beat.regurgitantVolume() * scale.volume;
+  f.forwardStrokeVolume = f.strokeVolume - f.regurgitantVolume;
   f.complete = beat.complete;
   // An unfinished beat's length is not known yet, and neither are its rate and output.
   if (beat.complete && beat.duration > 0) {
@@ -22,6 +23,24 @@ void setFlowRates(PumpSample& sample, const cardiac::ValveFlows& flows, double d
   if (dt <= 0) return;
   sample.mitralRate = (flows.mitralForward - flows.mitralBackward) / dt;
   sample.aorticRate = (flows.aorticForward - flows.aorticBackward) / dt;
+}
+
+PumpSample pumpSample(const cardiac::StepSample& step) {
+  PumpSample sample;
+  sample.time = step.time;
+  sample.phase = step.phase;
+  sample.cavity = step.cavity;
+  if (step.circulation) setFlowRates(sample, step.flows, step.time - step.startTime);
+  if (step.lumped) {
+    sample.pressureLv = step.lumped->lvPressure;
+    sample.pressureInflow = step.lumped->laPressure;
+    sample.pressureOutflow = step.lumped->aorticPressure;
+  } else if (step.circulation) {
+    sample.pressureLv = step.pressure(cardiac::FlowRegion::Ventricle);
+    sample.pressureInflow = step.pressure(cardiac::FlowRegion::InflowVessel);
+    sample.pressureOutflow = step.pressure(cardiac::FlowRegion::OutflowVessel);
+  }
+  return sample;
 }
 
 PumpReadout::PumpReadout(double initialVolume, double dt)
@@ -38,6 +57,8 @@ void PumpReadout::record(double startTime, cardiac::Phase phase, double volume,
     if (!m_tracker.beats().empty()) {
       m_last = m_tracker.beats().back();
       m_last->index = ++m_completed;
+      m_recent.push_back(*m_last);
+      if (m_recent.size() > kRecentBeats) m_recent.erase(m_recent.begin());
     }
     m_tracker = cardiac::BeatTracker(m_lastVolume, m_dt);
     m_currentEdv = m_lastVolume;
@@ -51,6 +72,7 @@ void PumpReadout::record(double startTime, cardiac::Phase phase, double volume,
 BeatReadings PumpReadout::readings() const {
   BeatReadings r;
   r.last = m_last;
+  r.recent = m_recent;
   r.beatsCompleted = m_completed;
   r.beating = m_beating;
   r.currentEdv = m_currentEdv;

@@ -4,10 +4,13 @@
 // the units a clinician reads, and the per-step values the live plots draw. Pure arithmetic on
 // what the simulation reports after each step; no GL or ImGui, so it is unit-tested.
 #include <array>
+#include <vector>
+#include <limits>
 #include <optional>
 
 #include "cardiac/beat_metrics.h"
 #include "cardiac/circulation.h"
+#include "cardiac/run_monitor.h"
 
 namespace hs::viewer {
 
@@ -23,26 +26,37 @@ struct ClinicalFigures {
   double ejectionFraction = 0;                // percent
   double cardiacOutput = 0;                   // output unit
   double regurgitantVolume = 0;               // volume unit
+  double forwardStrokeVolume = 0;             // volume unit: SV - regurgitant volume
   double heartRate = 0;                       // beats per minute; 0 for an unfinished beat
   bool complete = false;                      // ended by the next systole
 };
 ClinicalFigures clinicalFigures(const cardiac::BeatSummary& beat, const VolumeScale& scale);
 
-// What one step adds to the plots (SI): the cavity volume, the net valve flow rates and the
-// mean pressures of the three regions.
+// What one step adds to the plots (SI): the cavity volume, the net valve flow rates (raw, and
+// smoothed once the steps around it are known: plot_history.h) and the pressures.
 struct PumpSample {
-  double time = 0;                                                 // s, at the end of the step
-  double cavity = 0;                                               // m^3
-  double mitralRate = 0, aorticRate = 0;                           // m^3/s, forward - backward over the step
-  double pressureLv = 0, pressureInflow = 0, pressureOutflow = 0;  // Pa
+  double time = 0;                        // s, at the end of the step
+  cardiac::Phase phase = cardiac::Phase::Rest;  // during the step: beats start with systole
+  double cavity = 0;                      // m^3
+  double mitralRate = 0, aorticRate = 0;  // m^3/s, forward - backward over the step
+  // m^3/s, the centred mean over the smoothing window; NaN until the window's later half is in.
+  double mitralSmoothed = kUnknown, aorticSmoothed = kUnknown;
+  // Pa. With the lumped circulation: its LV, left atrial and proximal aortic pressures (the
+  // clinical ones); otherwise the blood solver's mean gauge pressure in the LV, the inflow
+  // vessel and the outflow vessel.
+  double pressureLv = 0, pressureInflow = 0, pressureOutflow = 0;
+  static constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
 };
 // The flows of one step of length dt as rates (m^3/s).
 void setFlowRates(PumpSample& sample, const cardiac::ValveFlows& flows, double dt);
+// The plots' sample of a step the run monitor gathered.
+PumpSample pumpSample(const cardiac::StepSample& step);
 
-// The beat in progress and the last complete one.
+// The beat in progress, the last complete one and the few before it.
 struct BeatReadings {
   std::optional<cardiac::BeatSummary> current;  // once its systole has ended (ESV known)
   std::optional<cardiac::BeatSummary> last;     // the last complete beat
+  std::vector<cardiac::BeatSummary> recent;     // the last complete beats, oldest first
   int beatsCompleted = 0;
   bool beating = false;     // a beat is in progress
   double currentEdv = 0;    // m^3, the beat in progress's end-diastolic volume
@@ -55,6 +69,9 @@ struct BeatReadings {
 // beat however long the viewer runs.
 class PumpReadout {
  public:
+  // Complete beats kept for the means (run_comparison.h averages up to 5).
+  static constexpr std::size_t kRecentBeats = 8;
+
   // initialVolume: the cavity volume before the first step (m^3); dt: the step (s).
   PumpReadout(double initialVolume, double dt);
   void record(double startTime, cardiac::Phase phase, double volume, const cardiac::ValveFlows& flows);
@@ -63,6 +80,7 @@ class PumpReadout {
  private:
   cardiac::BeatTracker m_tracker;  // the beat in progress (and, until the next starts, the last)
   std::optional<cardiac::BeatSummary> m_last;
+  std::vector<cardiac::BeatSummary> m_recent;
   int m_completed = 0;
   double m_dt = 0;
   double m_lastVolume = 0;

@@ -21,6 +21,7 @@ constexpr ImU32 kLoopColour = IM_COL32(175, 25, 40, 255);
 constexpr ImU32 kEndSystolicColour = IM_COL32(45, 70, 150, 255);
 constexpr ImU32 kEndDiastolicColour = IM_COL32(20, 125, 105, 255);
 constexpr ImU32 kEventColour = IM_COL32(50, 50, 60, 255);
+constexpr ImU32 kBeforeLoopColour = IM_COL32(150, 150, 150, 255);  // the run before the restart
 // The loops drawn, newest first: how strong each is.
 constexpr std::array<float, 3> kLoopAlpha = {1.0f, 0.42f, 0.2f};
 constexpr std::array<float, 3> kLoopThickness = {2.6f, 1.7f, 1.3f};
@@ -34,7 +35,8 @@ constexpr const char* kLoopHelp =
     "  left side (AC to MO): isovolumic relaxation.\n"
     "Width = stroke volume; area = the work of one beat. The top-left corner (end-systole) sits on "
     "the end-systolic line (ESPVR), whose slope Ees is the contractility.\n"
-    "The newest beat is drawn strongest, two before it fainter; the dot is now.";
+    "The newest beat is drawn strongest, two before it fainter; the dot is now. Grey: the last "
+    "loop of the run before the last restart.";
 
 ImVec2 point(const ChartFrame& f, const CirculationSample& s) {
   return f.at(s.lvVolume / kCubicMetresPerMl, s.lvPressure / kPascalPerMmHg);
@@ -128,7 +130,8 @@ void hoverReadout(const ChartFrame& f, const CirculationHistory& history) {
 }  // namespace
 
 void drawPressureVolumeLoop(const CirculationHistory& history,
-                            const cardiac::PressureVolumeRelations& relations, ImVec2 size) {
+                            const cardiac::PressureVolumeRelations& relations, ImVec2 size,
+                            std::span<const CirculationSample> before) {
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton("pv loop", size);
   const bool hovered = ImGui::IsItemHovered();
@@ -145,8 +148,14 @@ void drawPressureVolumeLoop(const CirculationHistory& history,
   // The axes fit the beats drawn, not older ones.
   const std::size_t shown = std::min(beats.size(), kLoopAlpha.size());
   const std::size_t from = shown > 0 ? beats[beats.size() - shown].begin : samples.size();
-  const LoopAxes axes = loopAxes(samples.subspan(from), relations, ticksFitting(f.x1 - f.x0, 42),
-                                 ticksFitting(f.y1 - f.y0, line * 1.8f));
+  // ... and the grey loop of the run before, so it is not cut off.
+  std::vector<CirculationSample> withBefore;
+  if (!before.empty()) {
+    withBefore.assign(samples.begin() + std::ptrdiff_t(from), samples.end());
+    withBefore.insert(withBefore.end(), before.begin(), before.end());
+  }
+  const LoopAxes axes = loopAxes(before.empty() ? samples.subspan(from) : std::span(withBefore), relations,
+                                 ticksFitting(f.x1 - f.x0, 42), ticksFitting(f.y1 - f.y0, line * 1.8f));
   f.x = axes.volume, f.y = axes.pressure;
 
   draw->AddText(origin, kChartText, "Pressure-volume loop");
@@ -161,6 +170,7 @@ void drawPressureVolumeLoop(const CirculationHistory& history,
 
   draw->PushClipRect(ImVec2(f.x0, f.y0), ImVec2(f.x1 + 1, f.y1 + 1), true);
   drawRelations(draw, f, relations);
+  if (before.size() >= 2) drawLoop(draw, f, before, kBeforeLoopColour, 1.8f);
   for (std::size_t k = shown; k-- > 0;) {  // oldest first, so the newest lies on top
     const BeatSpan& b = beats[beats.size() - 1 - k];
     drawLoop(draw, f, samples.subspan(b.begin, b.size()), fade(kLoopColour, kLoopAlpha[k]),

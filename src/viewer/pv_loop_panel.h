@@ -3,9 +3,11 @@
 // mL): the last three beats, the newest strongest, a dot at the present step, the valve events
 // of the last complete beat at its corners, and the end-systolic (P = Ees (V - V0)) and
 // end-diastolic (P = A (exp(B (V - V0)) - 1)) relations it moves between (Suga & Sagawa 1974),
-// as physiology texts draw it. Needs an ImGui frame in progress; what it draws is computed by
+// as physiology texts draw it; the run before the last restart's loop in grey beneath. Needs an ImGui frame in progress; what it draws is computed by
 // circulation_history.h (tested).
 #include <imgui.h>
+
+#include <span>
 
 #include "cardiac/circulation_trace.h"
 #include "viewer/circulation_history.h"
@@ -13,8 +15,10 @@
 namespace hs::viewer {
 
 // Draws into a `size` pixels region at the cursor (and advances the cursor past it).
-// `relations`: the effective ones (the beating share scales Ees).
+// `relations`: the effective ones (the beating share scales Ees). `before`: the last loop of the
+// run before the restart (run_comparison.h), empty for none.
 void drawPressureVolumeLoop(const CirculationHistory& history,
-                            const cardiac::PressureVolumeRelations& relations, ImVec2 size);
+                            const cardiac::PressureVolumeRelations& relations, ImVec2 size,
+                            std::span<const cardiac::CirculationSample> before = {});
 
 }  // namespace hs::viewer

@@ -58,7 +58,8 @@ void drawSceneLabels(const std::vector<SceneLabel>& labels, const render::Camera
         break;
     }
     // Inside the scene, whatever the camera does.
-    corner.x = std::clamp(corner.x, area.left + kPad, std::max(area.left + kPad, area.right - size.x - kPad));
+    constexpr float kEdge = 12;  // clear of the windows beside the scene
+    corner.x = std::clamp(corner.x, area.left + kEdge, std::max(area.left + kEdge, area.right - size.x - kEdge));
     corner.y = std::clamp(corner.y, top + kPad, std::max(top + kPad, bottom - size.y - kPad));
     draw.AddLine(ImVec2(p.x, p.y), end, kInk, 1.5f);
     draw.AddCircleFilled(ImVec2(p.x, p.y), 3, kInk);

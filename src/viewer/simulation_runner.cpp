@@ -17,19 +17,6 @@ using Clock = std::chrono::steady_clock;
 constexpr std::size_t kMaxPendingSamples = std::size_t(1) << 16;
 constexpr double kLumpedSecondsKept = 20;  // s of simulated time
 
-PumpSample pumpSample(const cardiac::StepSample& step) {
-  PumpSample sample;
-  sample.time = step.time;
-  sample.cavity = step.cavity;
-  if (step.circulation) {
-    setFlowRates(sample, step.flows, step.time - step.startTime);
-    sample.pressureLv = step.pressure(cardiac::FlowRegion::Ventricle);
-    sample.pressureInflow = step.pressure(cardiac::FlowRegion::InflowVessel);
-    sample.pressureOutflow = step.pressure(cardiac::FlowRegion::OutflowVessel);
-  }
-  return sample;
-}
-
 }  // namespace
 
 std::vector<ScenarioChoice> builtinScenarioChoices() {

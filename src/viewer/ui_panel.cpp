@@ -230,8 +230,8 @@ void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
   endSidePanel();
 }
 
-void drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge) {
-  if (!status.hasHeart && !status.hasBlood) return;
+float drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge) {
+  if (!status.hasHeart && !status.hasBlood) return bottomEdge;
   constexpr float kMargin = 10, kWidth = 260;
   ImGui::SetNextWindowPos(ImVec2(leftEdge + kMargin, bottomEdge - kMargin), ImGuiCond_Always,
                           ImVec2(0, 1));
@@ -268,7 +268,9 @@ void drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge)
       case render::BloodColour::Origin: originLegend(); break;
     }
   }
+  const float top = ImGui::GetWindowPos().y;
   ImGui::End();
+  return top;
 }
 
 void drawStatusOverlay(const ViewerStatus& status, float rightEdge, float bottomEdge) {

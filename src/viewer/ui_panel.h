@@ -98,7 +98,8 @@ void drawStatusOverlay(const ViewerStatus& status, float rightEdge, float bottom
 // The colour key (the wall's colours, the blood's speed scale) at the bottom left of the
 // scene; leftEdge: the control panel's right side, bottomEdge: the y (pixels) it keeps above
 // (the window's height, or the circulation panel's top).
-void drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge);
+// Returns the key's top edge (y, pixels); bottomEdge when there is no key.
+float drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge);
 
 // "asked 4x, reaching 0.21x" when the simulation cannot keep the asked speed, else "".
 std::string speedShortfall(double asked, const ViewerStatus& status);

@@ -8,6 +8,8 @@
 
 #include <string>
 
+#include "viewer/pump_panel.h"
+#include "viewer/run_comparison.h"
 #include "viewer/scene_overlays.h"
 #include "viewer/simulation_runner.h"
 #include "viewer/ui_panel.h"
@@ -78,6 +80,24 @@ TEST_P(PanelLayout, EveryControlIsInsideTheWindowWithAnySectionOpen) {
     EXPECT_LE(panel->ContentSize.y + 2 * panel->WindowPadding.y, panel->Size.y)
         << "section " << int(open) << " at " << width << "x" << height;
   }
+}
+
+TEST_P(PanelLayout, ThePumpPanelFitsWithoutScrolling) {
+  const auto [width, height] = GetParam();
+  PumpStatus status;
+  status.hasHeart = status.hasBlood = status.cycleOn = status.lumped = true;
+  status.scale = volumeScaleFor(120e-6);  // a human-size heart
+  PumpControls controls;
+  const PlotHistory history;
+  const RunComparison runs;
+  frames(width, height, [&] { drawPumpPanel(controls, status, history, runs, width, height); });
+  const ImGuiWindow* panel = ImGui::FindWindowByName("pump");
+  ASSERT_NE(panel, nullptr);
+  EXPECT_GE(panel->Pos.x, 0.0f);
+  EXPECT_LE(panel->Pos.x + panel->Size.x, float(width));
+  EXPECT_LE(panel->Pos.y + panel->Size.y, float(height));
+  EXPECT_EQ(panel->ScrollMax.y, 0.0f) << width << "x" << height;
+  EXPECT_LE(panel->ContentSize.y + 2 * panel->WindowPadding.y, panel->Size.y) << width << "x" << height;
 }
 
 TEST_P(PanelLayout, ToastsStayInsideTheScene) {
