@@ -126,6 +126,13 @@ float ViewerApp::lessonWidth(int windowWidth) const {
   return lessonPanelWidth(float(windowWidth) - kPanelWidth - rightPanelWidth());
 }
 
+float ViewerApp::rightPanelWidth() const {
+  int w = 0, h = 0;
+  glfwGetWindowSize(m_window.handle, &w, &h);
+  const bool room = float(w) - kPanelWidth - kPumpPanelWidth >= kMinSceneWidth;
+  return m_status.hasHeart && room ? kPumpPanelWidth : 0;
+}
+
 float ViewerApp::stripHeight(int windowHeight) const {
   return m_status.circulation.lumped && m_controls.showCirculation ? circulationPanelHeight(windowHeight) : 0;
 }

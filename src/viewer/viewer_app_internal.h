@@ -99,8 +99,10 @@ class ViewerApp {
   // The lesson window's width while it is shown: the heart is framed to its right.
   float lessonWidth(int windowWidth) const;
 
-  // The pump panel's width, when it is shown (with a heart).
-  float rightPanelWidth() const { return m_status.hasHeart ? kPumpPanelWidth : 0; }
+  // The pump panel's width, when it is shown: with a heart, in a window wide enough to keep a
+  // scene of kMinSceneWidth beside both panels.
+  static constexpr float kMinSceneWidth = 320;
+  float rightPanelWidth() const;
 
   // The circulation panel's height when it is shown (the lumped circulation, not hidden by C).
   float stripHeight(int windowHeight) const;

@@ -130,7 +130,7 @@ void ViewerApp::drawFrame(const std::string& captureTo) {
   glfwGetWindowSize(m_window.handle, &w, &h);
   glfwGetFramebufferSize(m_window.handle, &fbw, &fbh);
   drawControlPanel(m_controls, m_status, m_scenarios, h);
-  drawPumpPanel(m_controls.pump, m_status.pump, m_history, m_runs, w, h);
+  if (rightPanelWidth() > 0) drawPumpPanel(m_controls.pump, m_status.pump, m_history, m_runs, w, h);
   followStrip(h);
   // Side by side at the bottom of the scene, or, where the scene is too narrow for both (a
   // lesson beside it), the status corner above the colour key.
