@@ -1,5 +1,6 @@
 // Scenario files: parse TOML, walk it against the key table, apply --set overrides.
 #include "io/scenario_file.h"
+#include "io/toml_text.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -237,15 +238,9 @@ Scenario parseScenario(std::string_view tomlText, const std::string& sourceName,
   const std::string stem = std::filesystem::path(sourceName).stem().string();
   if (!stem.empty()) st.scenario.name = stem;
 
-  toml::table root;
-  try {
-    root = toml::parse(tomlText, sourceName);
-  } catch (const toml::parse_error& e) {
-    const auto& b = e.source().begin;
-    std::string where = sourceName;
-    if (b.line != 0) where += ":" + std::to_string(b.line) + ":" + std::to_string(b.column);
-    fail(where + ": TOML syntax error: " + std::string(e.description()));
-  }
+  io::TomlText parsed = io::parseTomlText(tomlText, sourceName);
+  if (!parsed.error.empty()) fail(parsed.error);
+  const toml::table& root = parsed.table;
   applyTable(st, root, "", Origin{sourceName, true});
   for (const std::string& o : overrides) applyOverride(st, o);
   validate(st);

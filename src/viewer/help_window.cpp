@@ -96,7 +96,7 @@ constexpr const char* kKeys[][2] = {
     {"Enter", "apply the region (restarts from t = 0)"},
     {"C", "PV loop and Wiggers diagram on / off (circulation model)"},
     {"H / F1", "this help"},
-    {"Esc", "quit"},
+    {"Esc", "close this window (or Compare); with none open, quit"},
 };
 
 void rowsTable(const char* id, std::span<const Row> rows, const char* thirdColumn) {

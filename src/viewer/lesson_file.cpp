@@ -2,6 +2,8 @@
 // the line, the step and the key, as the scenario reader's do (src/io/scenario_file.cpp).
 #include <toml++/toml.h>
 
+#include "io/toml_text.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -297,15 +299,9 @@ const char* sliderKey(LessonSlider slider) {
 }
 
 Lesson parseLesson(std::string_view tomlText, const std::string& sourceName) {
-  toml::table root;
-  try {
-    root = toml::parse(tomlText, sourceName);
-  } catch (const toml::parse_error& e) {
-    const auto& b = e.source().begin;
-    std::string where = sourceName;
-    if (b.line != 0) where += ":" + std::to_string(b.line) + ":" + std::to_string(b.column);
-    fail(where + ": TOML syntax error: " + std::string(e.description()));
-  }
+  io::TomlText parsed = io::parseTomlText(tomlText, sourceName);
+  if (!parsed.error.empty()) fail(parsed.error);
+  const toml::table& root = parsed.table;
   return LessonReader(sourceName).read(root);
 }
 

@@ -51,7 +51,15 @@ bool applyKeys(std::span<const KeyPress> presses, ViewerControls& c, bool paintA
         break;
       case GLFW_KEY_ENTER:
       case GLFW_KEY_KP_ENTER: region.applyRequested = true; break;
-      case GLFW_KEY_ESCAPE: quit = true; break;
+      // Esc closes an open window first (help, compare): a student closing one must not quit.
+      case GLFW_KEY_ESCAPE:
+        if (c.showHelp)
+          c.showHelp = false;
+        else if (c.pump.showCompare)
+          c.pump.showCompare = false;
+        else
+          quit = true;
+        break;
       default: break;
     }
   }

@@ -66,6 +66,18 @@ TEST(ViewerKeys, EscapeQuitsAndEnterApplies) {
   EXPECT_TRUE(applyKeys(std::vector{escape}, controls, true));
 }
 
+TEST(ViewerKeys, EscapeClosesAnOpenWindowBeforeItQuits) {
+  ViewerControls controls;
+  controls.showHelp = controls.pump.showCompare = true;
+  const KeyPress escape{GLFW_KEY_ESCAPE, false, false};
+  EXPECT_FALSE(applyKeys(std::vector{escape}, controls, true));
+  EXPECT_FALSE(controls.showHelp);
+  EXPECT_TRUE(controls.pump.showCompare);
+  EXPECT_FALSE(applyKeys(std::vector{escape}, controls, true));
+  EXPECT_FALSE(controls.pump.showCompare);
+  EXPECT_TRUE(applyKeys(std::vector{escape}, controls, true));
+}
+
 TEST(ViewerKeys, AQueueNoFrameReadsStaysBounded) {
   KeyEvents events;
   for (int i = 0; i < 10000; ++i) events.push(GLFW_KEY_S, GLFW_REPEAT, 0);
