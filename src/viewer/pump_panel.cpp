@@ -130,18 +130,25 @@ std::string beatsText(int count) { return std::to_string(count) + (count == 1 ? 
 // Which run "before" and "now" are, and the button that opens them side by side.
 void runLabels(PumpControls& c, const RunComparison& runs) {
   const std::optional<RunRecord>& before = runs.previous();
+  // The button at the first line's right end; a long label wraps short of it.
+  const float button = ImGui::CalcTextSize("Compare").x + 2 * ImGui::GetStyle().FramePadding.x;
+  const float buttonX = ImGui::GetWindowContentRegionMax().x - button;
+  const ImVec2 lineStart = ImGui::GetCursorPos();
   ImGui::TextColored(kMuted, "before:");
   ImGui::SameLine();
+  ImGui::PushTextWrapPos(buttonX - ImGui::GetStyle().ItemSpacing.x);
   ImGui::TextUnformatted(before ? before->label.c_str() : "(no earlier run yet)");
+  ImGui::PopTextWrapPos();
   tooltip(
       "The run before the last restart (a region applied, a slider moved, Reset, another "
       "scenario): its numbers stay in the 'before' column and its last beat is drawn in grey "
       "in the plots, so you can see what the change did.");
-  const float button = ImGui::CalcTextSize("Compare").x + 2 * ImGui::GetStyle().FramePadding.x;
-  ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowContentRegionMax().x - button));
+  const ImVec2 afterLabel = ImGui::GetCursorPos();
+  ImGui::SetCursorPos(ImVec2(buttonX, lineStart.y));
   if (ImGui::SmallButton("Compare")) c.showCompare = !c.showCompare;
   tooltip("Open a window with the run before and this one side by side: their numbers, their "
           "volume curves over one beat and their pressure-volume loops.");
+  ImGui::SetCursorPos(afterLabel);
   ImGui::TextColored(kMuted, "now:");
   ImGui::SameLine();
   ImGui::TextUnformatted(runs.current().label.c_str());
