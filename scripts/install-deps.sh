@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs heartsim's build and test dependencies from Debian packages. Idempotent: packages
 # already present are skipped, and nothing is done when everything is there.
+# `scripts/install-deps.sh --fuzz` adds clang with libFuzzer and its OpenMP (scripts/fuzz.sh).
 set -euo pipefail
 
 packages=(
@@ -11,6 +12,7 @@ packages=(
   libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgl1-mesa-dri libegl-mesa0
   xvfb xauth
 )
+if [ "${1:-}" = "--fuzz" ]; then packages+=(clang libclang-rt-dev libomp-dev); fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# scripts/fuzz.sh [SECONDS] [TARGET...]: builds the libFuzzer targets (fuzz/, clang with ASan and
+# UBSan: the `fuzz` preset) and runs each for SECONDS (default 60) on one core, seeded with the
+# built-in scenarios and lessons. A crash leaves its input in build/fuzz/findings/<target>/ and
+# makes the script exit non-zero. Installs clang and libFuzzer first if they are missing.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-60}
+shift || true
+targets=("$@")
+[ ${#targets[@]} -eq 0 ] && targets=(fuzz_scenario fuzz_set fuzz_lesson)
+scripts/install-deps.sh --fuzz
+scripts/build.sh fuzz "${targets[@]}"
+status=0
+for t in "${targets[@]}"; do
+  corpus=build/fuzz/corpus/$t findings=build/fuzz/findings/$t
+  mkdir -p "$corpus" "$findings"
+  case $t in
+    fuzz_scenario) cp -n scenarios/*.toml "$corpus"/ ;;
+    fuzz_lesson) cp -n lessons/*.toml "$corpus"/ ;;
+    fuzz_set) for s in "cycle.heart_rate_bpm=90" "blood.particles=3000" "simulation.gravity=[0,-9.81,0]" \
+                       "circulation.valves=pressure" "cycle.segments=[1,2,7]" "model.resolution=1.5"; do
+                printf '%s' "$s" > "$corpus/$(printf '%s' "$s" | md5sum | cut -c1-12)"; done ;;
+  esac
+  echo "heartsim: fuzzing $t for $seconds s" >&2
+  if ! "build/fuzz/fuzz/$t" -max_total_time="$seconds" -artifact_prefix="$findings/" -print_final_stats=1 \
+       "$corpus" 2> "build/fuzz/$t.log"; then
+    echo "heartsim: $t found a failure: see build/fuzz/$t.log and $findings/" >&2
+    status=1
+  fi
+  grep -E "stat::number_of_executed_units|stat::peak_rss_mb|Done [0-9]+ runs" "build/fuzz/$t.log" >&2 || true
+done
+exit $status
