@@ -107,6 +107,7 @@ void addViewCommand(CLI::App& app, Commands& c) {
   viewApp->add_option("--screenshot", view.screenshot, "Save the last frame as this PNG file");
   viewApp->add_option("--lesson", view.lesson,
                       "Run a lesson: a built-in (regional-wall-motion, rhythm, preload-afterload) or a .toml file");
+  viewApp->add_option("--resume", view.resume, "Start from a checkpoint file (F5 in the viewer or run --checkpoint-every writes one)");
   addThreadsOption(viewApp, view.threads,
                    "Simulation threads (default: all cores but one, which the drawing needs)");
   addSetOption(viewApp, view.overrides);
