@@ -182,7 +182,9 @@ int runCommand(const RunOptions& options) {
     return kExitBadInput;
   }
   timing.setupSeconds = secondsSince(setupStart);
-  timing.resumedAtStep = sim->stepCount();
+  // The summary counts the steps its monitor watched: the whole run's when the checkpoint holds
+  // the monitor's state (`heartsim run`), those after the checkpoint when not (the viewer's).
+  if (resumed && !resumed->checkpoint.monitor.empty()) timing.resumedAtStep = sim->stepCount();
 
   const fs::path outDir = options.outDir.empty() ? io::defaultOutputFolder(scenario->name) : fs::path(options.outDir);
   std::optional<io::MetricsCsvFile> csv = openOutputs(outDir, *sim);
