@@ -32,6 +32,7 @@ void addSetOption(CLI::App* command, std::vector<std::string>& overrides, const 
 struct Commands {
   hs::app::RunOptions run;
   double duration = -1;
+  double checkpointEvery = 0;
   hs::app::RenderOptions render;
   bool renderClip = true;
   hs::app::ViewOptions view;
@@ -49,12 +50,16 @@ struct Commands {
 void addRunCommand(CLI::App& app, Commands& c) {
   hs::app::RunOptions& run = c.run;
   CLI::App* runApp = c.runApp = app.add_subcommand("run", "Run a scenario headless and write its results");
-  runApp->add_option("scenario", run.scenario, "Built-in scenario name or path to a .toml file")->required();
+  // Required unless --resume names a checkpoint, which holds its scenario (dispatch checks).
+  runApp->add_option("scenario", run.scenario, "Built-in scenario name or path to a .toml file");
   runApp->add_option("--duration", c.duration, "Simulated time (s), overrides simulation.duration");
   addThreadsOption(runApp, run.threads);
   runApp->add_option("--out", run.outDir, "Output directory (default: results/<scenario>)");
   runApp->add_flag("--json", run.json, "Print one JSON summary object on stdout");
   runApp->add_flag("--vtk", run.vtk, "Write VTK frames and a .pvd series for ParaView");
+  runApp->add_option("--checkpoint-every", c.checkpointEvery,
+                     "Write the whole state every S simulated seconds into the output folder (checkpoint_<time>s.hsck)");
+  runApp->add_option("--resume", run.resume, "Continue a checkpoint file to --duration (the scenario comes from it)");
   addSetOption(runApp, run.overrides);
 }
 
@@ -102,6 +107,7 @@ void addViewCommand(CLI::App& app, Commands& c) {
   viewApp->add_option("--screenshot", view.screenshot, "Save the last frame as this PNG file");
   viewApp->add_option("--lesson", view.lesson,
                       "Run a lesson: a built-in (regional-wall-motion, rhythm, preload-afterload) or a .toml file");
+  viewApp->add_option("--resume", view.resume, "Start from a checkpoint file (F5 in the viewer or run --checkpoint-every writes one)");
   addThreadsOption(viewApp, view.threads,
                    "Simulation threads (default: all cores but one, which the drawing needs)");
   addSetOption(viewApp, view.overrides);
@@ -163,6 +169,14 @@ int dispatch(Commands& c) {
   using namespace hs::app;
   if (c.runApp->parsed()) {
     if (c.runApp->count("--duration") > 0) c.run.duration = c.duration;
+    if (c.runApp->count("--checkpoint-every") > 0) c.run.checkpointEvery = c.checkpointEvery;
+    if (c.runApp->count("scenario") == 0) {
+      if (c.run.resume.empty()) {
+        std::cerr << "heartsim: error: run: a scenario is required (or --resume FILE) (see heartsim --help)\n";
+        return kExitBadInput;
+      }
+      c.run.scenario.clear();
+    }
     return runCommand(c.run);
   }
   if (c.renderApp->parsed()) {

@@ -17,6 +17,7 @@
 #include "io/run_report.h"
 #include "io/simulation_vtk.h"
 #include "progress_bar.h"
+#include "run_resume.h"
 #include "simulation_setup.h"
 
 namespace hs::app {
@@ -64,13 +65,21 @@ std::optional<std::int64_t> stepCountOrReport(const cardiac::Scenario& scenario,
   return static_cast<std::int64_t>(stepCount);
 }
 
-// Steps to the end, a metrics row per step and a VTK frame every vtkEvery steps; stops at the
-// first failed health check. Times the steps alone into wallSeconds.
+// Where and how often a run writes checkpoints (every `every` steps of the whole run, so a
+// resumed run writes them at the same times; 0: none).
+struct CheckpointPlan {
+  fs::path folder;
+  std::int64_t every = 0;
+};
+
+// Steps to the end, a metrics row per step, a VTK frame every vtkEvery steps and a checkpoint
+// as planned; stops at the first failed health check. Times the steps alone into wallSeconds.
 int simulate(cardiac::HeartSimulation& sim, cardiac::RunMonitor& monitor, std::int64_t steps,
-             io::MetricsCsvFile& csv, io::SimulationVtkSeries* vtk, int vtkEvery, double& wallSeconds) {
+             io::MetricsCsvFile& csv, io::SimulationVtkSeries* vtk, int vtkEvery, const CheckpointPlan& checkpoints,
+             double& wallSeconds) {
   ProgressBar progress(static_cast<long>(steps));
   try {
-    if (vtk) vtk->write(sim, 0);
+    if (vtk) vtk->write(sim, sim.stepCount());
     for (std::int64_t s = 0; s < steps; ++s) {
       const auto stepStart = Clock::now();
       sim.step();
@@ -83,7 +92,10 @@ int simulate(cardiac::HeartSimulation& sim, cardiac::RunMonitor& monitor, std::i
         return kExitInvalidSimulation;
       }
       csv.add(monitor.last());
-      if (vtk && (s + 1) % vtkEvery == 0) vtk->write(sim, s + 1);
+      if (vtk && sim.stepCount() % vtkEvery == 0) vtk->write(sim, sim.stepCount());
+      if (checkpoints.every > 0 && sim.stepCount() % checkpoints.every == 0)
+        io::writeCheckpointFile(checkpoints.folder / io::checkpointFileName(sim.time()),
+                                io::captureCheckpoint(sim, &monitor));
       progress.update(static_cast<long>(s + 1), sim.time());
     }
     progress.finish();
@@ -151,29 +163,50 @@ int report(const cardiac::Scenario& scenario, const io::RunTiming& timing, const
 
 int runCommand(const RunOptions& options) {
   const auto setupStart = Clock::now();
-  const std::optional<cardiac::Scenario> scenario = runScenario(options);
+  std::optional<ResumedRun> resumed;
+  if (!options.resume.empty() && !(resumed = readResumedRun(options))) return kExitBadInput;
+  const std::optional<cardiac::Scenario> scenario = resumed ? resumed->scenario : runScenario(options);
   if (!scenario) return kExitBadInput;
+  const std::optional<std::int64_t> checkpointEvery = checkpointIntervalOrReport(options, *scenario);
+  if (!checkpointEvery) return kExitBadInput;
   io::RunTiming timing;
   timing.threads = options.threads > 0 ? options.threads : omp_get_num_procs();
   int setupError = kExitOk;
-  const auto sim = makeSimulation(*scenario, timing.threads, options.scenario, setupError);
+  const std::string source = resumed ? options.resume : options.scenario;
+  const auto sim = makeSimulation(*scenario, timing.threads, source, setupError);
   if (!sim) return setupError;
+  try {
+    if (resumed) io::restoreSimulation(resumed->checkpoint, *sim, options.resume);
+  } catch (const io::CheckpointError& e) {
+    std::cerr << "heartsim: error: " << e.what() << '\n';
+    return kExitBadInput;
+  }
   timing.setupSeconds = secondsSince(setupStart);
+  // The summary counts the steps its monitor watched: the whole run's when the checkpoint holds
+  // the monitor's state (`heartsim run`), those after the checkpoint when not (the viewer's).
+  if (resumed && !resumed->checkpoint.monitor.empty()) timing.resumedAtStep = sim->stepCount();
 
   const fs::path outDir = options.outDir.empty() ? io::defaultOutputFolder(scenario->name) : fs::path(options.outDir);
   std::optional<io::MetricsCsvFile> csv = openOutputs(outDir, *sim);
   if (!csv) return kExitFailure;
-  const std::optional<std::int64_t> steps = stepCountOrReport(*scenario, options.scenario);
+  const std::optional<std::int64_t> steps = stepCountOrReport(*scenario, source);
   if (!steps) return kExitBadInput;
 
   cardiac::MonitorSettings settings;
   settings.everyColumn = true;
   settings.endTime = double(*steps) * double(scenario->simulation.dt);
   cardiac::RunMonitor monitor(*sim, settings);
+  try {
+    if (resumed) io::restoreMonitor(resumed->checkpoint, monitor, options.resume);
+  } catch (const io::CheckpointError& e) {
+    std::cerr << "heartsim: error: " << e.what() << '\n';
+    return kExitBadInput;
+  }
   std::optional<io::SimulationVtkSeries> vtk;
   if (options.vtk || scenario->output.vtk) vtk.emplace(outDir, sim->hasHeart(), sim->hasBlood());
-  const int simulated = simulate(*sim, monitor, *steps, *csv, vtk ? &*vtk : nullptr, scenario->output.vtkEvery,
-                                 timing.wallSeconds);
+  const CheckpointPlan checkpoints{outDir, *checkpointEvery};
+  const int simulated = simulate(*sim, monitor, *steps - sim->stepCount(), *csv, vtk ? &*vtk : nullptr,
+                                 scenario->output.vtkEvery, checkpoints, timing.wallSeconds);
   if (simulated == kExitInvalidSimulation) writeFailureSummary(*scenario, timing, monitor, outDir);
   if (simulated != kExitOk) return simulated;
   if (!writeCirculationPlots(*scenario, *sim, monitor, outDir)) return kExitFailure;

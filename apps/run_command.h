@@ -1,5 +1,6 @@
 #pragma once
-// `heartsim run SCENARIO|FILE.toml`: the headless runner.
+// `heartsim run SCENARIO|FILE.toml`: the headless runner; `heartsim run --resume FILE`
+// continues a checkpoint (io/checkpoint.h) to --duration, bitwise as the run without a stop.
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,8 @@ struct RunOptions {
   std::string outDir;                  // empty: results/<scenario name>
   bool json = false;
   bool vtk = false;
+  std::optional<double> checkpointEvery;  // --checkpoint-every S: a checkpoint every S simulated seconds
+  std::string resume;                     // --resume FILE: continue this checkpoint (scenario may be empty)
 };
 
 int runCommand(const RunOptions& options);

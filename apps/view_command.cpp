@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "exit_codes.h"
+#include "io/checkpoint.h"
 #include "io/scenario_file.h"
 #include "simulation_setup.h"
 #include "viewer/viewer_app.h"
@@ -34,6 +35,10 @@ int viewCommand(const ViewOptions& options) {
     std::cerr << "heartsim: error: --frames: must be >= 0 (0 = until the window is closed)\n";
     return kExitBadInput;
   }
+  if (!options.resume.empty() && !options.lesson.empty()) {
+    std::cerr << "heartsim: error: --resume: a lesson starts from its own scenario; give --resume or --lesson\n";
+    return kExitBadInput;
+  }
   std::string scenarioName = options.scenario;
   if (!options.lesson.empty()) {
     try {
@@ -44,7 +49,20 @@ int viewCommand(const ViewOptions& options) {
     }
     scenarioName = viewer.lesson->scenario;  // a lesson starts where its file says
   }
-  std::optional<cardiac::Scenario> scenario = loadScenarioOrReport(scenarioName, options.overrides);
+  std::optional<cardiac::Scenario> scenario;
+  if (!options.resume.empty()) {
+    // The checkpoint holds its scenario; the viewer's settings may change it after a Reset.
+    try {
+      viewer.resume = io::readCheckpointFile(options.resume);
+      scenario = io::checkpointScenario(*viewer.resume, options.resume);
+    } catch (const io::CheckpointError& e) {
+      std::cerr << "heartsim: error: " << e.what() << '\n';
+      return kExitBadInput;
+    }
+    viewer.resumeSource = scenarioName = options.resume;
+  } else {
+    scenario = loadScenarioOrReport(scenarioName, options.overrides);
+  }
   if (!scenario) return kExitBadInput;
   viewer.scenario = *scenario;
   const std::vector<std::string> builtins = io::builtinScenarioNames();
@@ -57,6 +75,9 @@ int viewCommand(const ViewOptions& options) {
   viewer.threads = options.threads > 0 ? options.threads : std::max(1, omp_get_num_procs() - 1);
   try {
     viewer::runViewer(viewer);
+  } catch (const io::CheckpointError& e) {
+    std::cerr << "heartsim: error: " << e.what() << '\n';
+    return kExitBadInput;
   } catch (const viewer::DisplayError& e) {
     std::cerr << "heartsim: error: " << e.what() << '\n';
     return kExitFailure;

@@ -96,4 +96,14 @@ void BeatClock::endDiastole() {
   m_phase = limitReached ? Phase::Rest : Phase::Systole;
 }
 
+void BeatClock::save(pbd::StateWriter& w) const {
+  w.section("beat clock");
+  w.fields(m_phase, m_steps, m_systolesCompleted, m_delayed, m_diastoleShare, m_travel, m_random);
+}
+
+void BeatClock::load(pbd::StateReader& r) {
+  r.section("beat clock");
+  r.fields(m_phase, m_steps, m_systolesCompleted, m_delayed, m_diastoleShare, m_travel, m_random);
+}
+
 }  // namespace hs::cardiac

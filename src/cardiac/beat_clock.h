@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <random>
 
+#include "pbd/state_stream.h"
 #include "pbd/types.h"
 
 namespace hs::cardiac {
@@ -61,6 +62,9 @@ class BeatClock {
   [[nodiscard]] int systolesCompleted() const { return m_systolesCompleted; }
   // Length (steps of dt) of the diastole in progress or to come.
   [[nodiscard]] int diastoleLength(Real dt) const;
+  // Checkpoints: the phase, its step count and the random stream (state_stream.h).
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 
  private:
   struct Lengths {

@@ -66,4 +66,30 @@ VolumeScale volumeScaleFor(double cavityVolume) {
   return {true, 1.0, "m^3", "m^3/s", 60.0, "m^3/min"};
 }
 
+void ValveFlows::save(pbd::StateWriter& w) const {
+  w.fields(mitralForward, mitralBackward, aorticForward, aorticBackward);
+}
+
+void ValveFlows::load(pbd::StateReader& r) {
+  r.fields(mitralForward, mitralBackward, aorticForward, aorticBackward);
+}
+
+void BeatSummary::save(pbd::StateWriter& w) const {
+  w.fields(index, startTime, duration, complete, edv, esv, flows, mitralNetInSystole, aorticNetInDiastole);
+}
+
+void BeatSummary::load(pbd::StateReader& r) {
+  r.fields(index, startTime, duration, complete, edv, esv, flows, mitralNetInSystole, aorticNetInDiastole);
+}
+
+void BeatTracker::save(pbd::StateWriter& w) const {
+  w.section("beat tracker");
+  w.fields(m_beats, m_current, m_open, m_systoleEnded, m_previous, m_lastVolume);
+}
+
+void BeatTracker::load(pbd::StateReader& r) {
+  r.section("beat tracker");
+  r.fields(m_beats, m_current, m_open, m_systoleEnded, m_previous, m_lastVolume);
+}
+
 }  // namespace hs::cardiac

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cardiac/beat_clock.h"
+#include "pbd/state_stream.h"
 
 namespace hs::cardiac {
 
@@ -19,6 +20,8 @@ struct ValveFlows {
     aorticForward += o.aorticForward, aorticBackward += o.aorticBackward;
     return *this;
   }
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 };
 
 struct BeatSummary {
@@ -32,6 +35,8 @@ struct BeatSummary {
   // Net forward volume (m^3, forward - backward) through the mitral valve during systole and
   // through the aortic valve during diastole: the phases in which each should be shut.
   double mitralNetInSystole = 0, aorticNetInDiastole = 0;
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
   [[nodiscard]] double strokeVolume() const { return edv - esv; }
   [[nodiscard]] double ejectionFraction() const { return edv > 0 ? (edv - esv) / edv : 0; }
   // Cardiac output (m^3/s): the stroke volume once per beat, CO = SV / beat length.
@@ -86,6 +91,9 @@ class BeatTracker {
   // Mean EF over the recorded beats (0 without beats).
   [[nodiscard]] double meanEjectionFraction() const;
   [[nodiscard]] BeatMeans means() const;
+  // Checkpoints: the beats so far and the one in progress (the step length is a setting).
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 
  private:
   std::vector<BeatSummary> m_beats;

@@ -234,4 +234,12 @@ BloodStats measureBlood(const pbd::Particles& particles, const pbd::FluidStats& 
   return stats;
 }
 
+void BloodStats::save(pbd::StateWriter& w) const {
+  w.fields(particles, lost, densityErrorMean, densityErrorMax, fullNeighbourhood, maxSpeed, meanNeighbours, insideWall);
+}
+
+void BloodStats::load(pbd::StateReader& r) {
+  r.fields(particles, lost, densityErrorMean, densityErrorMax, fullNeighbourhood, maxSpeed, meanNeighbours, insideWall);
+}
+
 }  // namespace hs::cardiac

@@ -55,6 +55,8 @@ struct BloodStats {
   double meanNeighbours = 0;  // neighbours within the support radius per particle
   // Particles whose centre is more than 1% of their radius inside a wall tetrahedron.
   std::size_t insideWall = 0;
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 };
 
 // The blood's statistics from the fluid's (`fluid`, e.g. pbd::FluidSolver::measure) and the

@@ -151,4 +151,14 @@ std::size_t BloodLoop::reenter(pbd::Particles& particles, Index first) {
   return reentered;
 }
 
+void BloodLoop::save(pbd::StateWriter& w) const {
+  w.section("blood loop");
+  w.fields(m_inletMetered, m_inletTravel, m_inletVelocity, m_inletLayer, m_lot, m_queue);
+}
+
+void BloodLoop::load(pbd::StateReader& r) {
+  r.section("blood loop");
+  r.fields(m_inletMetered, m_inletTravel, m_inletVelocity, m_inletLayer, m_lot, m_queue);
+}
+
 }  // namespace hs::cardiac

@@ -38,6 +38,9 @@ class BloodLoop {
   // moved on (`travel`: m into the heart this step), with the plug's velocity, instead of at
   // the free sites of the plain inlet.
   void meterInlet(Real travel, Real dt);
+  // Checkpoints: the metered inlet's progress, the parking lot and the queue.
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 
 
  private:

@@ -197,4 +197,22 @@ int CardiacCycle::beatsCompleted() const {
   return m_regions.empty() ? 0 : m_regions.front().clock.systolesCompleted();
 }
 
+void CardiacCycle::save(pbd::StateWriter& w) const {
+  w.section("cardiac cycle");
+  w.put(std::uint64_t(m_regions.size()));
+  for (const BeatingRegion& region : m_regions) w.fields(region.clock, region.anchor, region.endSystole);
+}
+
+void CardiacCycle::load(pbd::StateReader& r) {
+  r.section("cardiac cycle");
+  const std::size_t at = r.offset();
+  std::uint64_t count = 0;
+  r.get(count);
+  if (count != m_regions.size())
+    throw pbd::StateError("cardiac cycle: " + std::to_string(count) + " beating regions where the scenario has " +
+                              std::to_string(m_regions.size()),
+                          at);
+  for (BeatingRegion& region : m_regions) r.fields(region.clock, region.anchor, region.endSystole);
+}
+
 }  // namespace hs::cardiac

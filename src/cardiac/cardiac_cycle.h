@@ -58,6 +58,9 @@ class CardiacCycle {
   [[nodiscard]] int beatsCompleted() const;  // systoles completed by the main region
   [[nodiscard]] const std::vector<BeatingRegion>& regions() const { return m_regions; }
   [[nodiscard]] const Vec3& centre() const { return m_centre; }
+  // Checkpoints: each region's clock, anchor and end-systolic positions.
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 
  private:
   std::vector<BeatingRegion> m_regions;

@@ -91,4 +91,22 @@ std::optional<double> CirculationRecorder::aorticFlowErrorMax() const {
   return worst;
 }
 
+void CoupledBeat::save(pbd::StateWriter& w) const {
+  w.fields(index, startTime, duration, complete, lumped, aorticNet3d, aorticJet);
+}
+
+void CoupledBeat::load(pbd::StateReader& r) {
+  r.fields(index, startTime, duration, complete, lumped, aorticNet3d, aorticJet);
+}
+
+void CirculationRecorder::save(pbd::StateWriter& w) const {
+  w.section("circulation recorder");
+  w.fields(m_samples, m_beatStarts, m_beats, m_beat, m_current, m_atrialOnset, m_lastAtrial, m_open, m_previous, m_lastCavity, m_bothOpen, m_cavityErrorMax, m_cavityStepMax, m_fillMin);
+}
+
+void CirculationRecorder::load(pbd::StateReader& r) {
+  r.section("circulation recorder");
+  r.fields(m_samples, m_beatStarts, m_beats, m_beat, m_current, m_atrialOnset, m_lastAtrial, m_open, m_previous, m_lastCavity, m_bothOpen, m_cavityErrorMax, m_cavityStepMax, m_fillMin);
+}
+
 }  // namespace hs::cardiac

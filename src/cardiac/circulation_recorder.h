@@ -33,6 +33,8 @@ struct CoupledBeat {
   LumpedBeatFigures lumped;
   double aorticNet3d = 0;  // m^3 through the 3D aortic orifice, forward - backward
   double aorticJet = 0;    // m/s, fastest over the beat
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
   // |3D - lumped| / lumped net aortic volume over the beat.
   [[nodiscard]] double aorticFlowError() const;
 };
@@ -70,6 +72,10 @@ class CirculationRecorder {
   [[nodiscard]] double vesselFillMin() const { return m_fillMin; }
   // Over the complete beats after the first; none without one.
   [[nodiscard]] std::optional<double> aorticFlowErrorMax() const;
+  // Checkpoints: the samples, the beats and the beat in progress (dt and the samples kept are
+  // settings).
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 
  private:
   void close(bool complete);

@@ -3,6 +3,8 @@
 // the viewer read it. SI units: m^3, Pa, m^3/s, s.
 #include <vector>
 
+#include "pbd/state_stream.h"
+
 namespace hs::cardiac {
 
 struct CirculationSample {
@@ -17,6 +19,8 @@ struct CirculationSample {
   bool aorticOpen = false;
   double ventricularActivation = 0;  // in [0, 1] during the step (times the beating share)
   double atrialActivation = 0;       // in [0, 1]
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 };
 
 // The ventricle's pressure-volume relations, for drawing them under the loop:

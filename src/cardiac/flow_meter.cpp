@@ -90,4 +90,22 @@ ValveFlows FlowMeter::lastStepFlows() const {
           double(m_last.aorticBackward) * v};
 }
 
+void FlowStep::save(pbd::StateWriter& w) const {
+  w.fields(count, pressure, mitralForward, mitralBackward, aorticForward, aorticBackward, aorticJet, returned, reentered, valves, valvePressures);
+}
+
+void FlowStep::load(pbd::StateReader& r) {
+  r.fields(count, pressure, mitralForward, mitralBackward, aorticForward, aorticBackward, aorticJet, returned, reentered, valves, valvePressures);
+}
+
+void FlowMeter::save(pbd::StateWriter& w) const {
+  w.section("flow meter");
+  w.fields(m_last);
+}
+
+void FlowMeter::load(pbd::StateReader& r) {
+  r.section("flow meter");
+  r.fields(m_last);
+}
+
 }  // namespace hs::cardiac

@@ -28,6 +28,8 @@ struct FlowStep {
   std::size_t reentered = 0;  // parked particles that re-entered the inflow vessel
   ValveStates valves;         // during the step
   ValvePressures valvePressures;
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 };
 
 class FlowMeter {
@@ -52,6 +54,10 @@ class FlowMeter {
   // Measure at the orifices where they are now (a descending base carries them); call before
   // begin(): a step's crossings are counted against one plane.
   void follow(const FlowPath& path) { m_path = path; }
+  // Checkpoints: the last step (the valves' pressure mode reads it); the start positions and
+  // the orifices are set anew at every step's start.
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 
  private:
   FlowPath m_path;

@@ -34,6 +34,8 @@ struct TissueStats {
   Index firstInvertedTet = 0;    // model tet id, when invertedTets > 0
   bool finite = true;        // every position and velocity finite
   Index firstNonFinite = 0;  // particle id, when !finite
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 };
 
 class HeartSimulation {
@@ -89,6 +91,13 @@ class HeartSimulation {
   [[nodiscard]] TissueStats tissueStats() const;
   // Largest vertex distance from its rest position, divided by the LV long axis.
   [[nodiscard]] Real restDeviationRelative() const;
+
+  // Checkpoints (io/checkpoint.h): everything a step changes, piece by piece; the rest (the
+  // model, the constraints, settings, scratch) is rebuilt from the scenario by the
+  // constructor. load() expects a simulation built from the same scenario and throws
+  // pbd::StateError for state of another.
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 
  private:
   // Construction.

@@ -57,4 +57,12 @@ LumpedBeatFigures analyseLumpedBeat(const std::vector<CirculationSample>& beat, 
   return f;
 }
 
+void LumpedBeatFigures::save(pbd::StateWriter& w) const {
+  w.fields(aorticSystolic, aorticDiastolic, lvPeak, lvEndDiastolic, edv, esv, isovolumicContraction, isovolumicRelaxation, eToA, forwardStrokeVolume, regurgitantVolume, aorticMeanGradient, bothValvesOpenSamples);
+}
+
+void LumpedBeatFigures::load(pbd::StateReader& r) {
+  r.fields(aorticSystolic, aorticDiastolic, lvPeak, lvEndDiastolic, edv, esv, isovolumicContraction, isovolumicRelaxation, eToA, forwardStrokeVolume, regurgitantVolume, aorticMeanGradient, bothValvesOpenSamples);
+}
+
 }  // namespace hs::cardiac

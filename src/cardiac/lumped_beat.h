@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cardiac/circulation_trace.h"
+#include "pbd/state_stream.h"
 
 namespace hs::cardiac {
 
@@ -20,6 +21,8 @@ struct LumpedBeatFigures {
   double regurgitantVolume = 0;      // m^3 back through the mitral valve plus back through the aortic
   double aorticMeanGradient = 0;     // Pa: mean LV - aortic pressure while the aortic valve is open
   std::size_t bothValvesOpenSamples = 0;
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
   [[nodiscard]] double totalStrokeVolume() const { return edv - esv; }
   // Regurgitant volume over the ventricle's total stroke volume.
   [[nodiscard]] double regurgitantFraction() const {

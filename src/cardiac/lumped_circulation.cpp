@@ -176,4 +176,30 @@ PressureVolumeRelations LumpedCirculation::relations(double beatingShare) const 
           m_parameters.diastolicExponent};
 }
 
+void LumpedState::save(pbd::StateWriter& w) const {
+  w.fields(lvVolume, laVolume, compliancePressure);
+}
+
+void LumpedState::load(pbd::StateReader& r) {
+  r.fields(lvVolume, laVolume, compliancePressure);
+}
+
+void LumpedCirculation::save(pbd::StateWriter& w) const {
+  w.section("lumped circulation");
+  w.fields(m_state, m_last);
+}
+
+void LumpedCirculation::load(pbd::StateReader& r) {
+  r.section("lumped circulation");
+  r.fields(m_state, m_last);
+}
+
+void CirculationSample::save(pbd::StateWriter& w) const {
+  w.fields(time, lvVolume, lvPressure, laPressure, aorticPressure, mitralFlow, aorticFlow, mitralOpen, aorticOpen, ventricularActivation, atrialActivation);
+}
+
+void CirculationSample::load(pbd::StateReader& r) {
+  r.fields(time, lvVolume, lvPressure, laPressure, aorticPressure, mitralFlow, aorticFlow, mitralOpen, aorticOpen, ventricularActivation, atrialActivation);
+}
+
 }  // namespace hs::cardiac

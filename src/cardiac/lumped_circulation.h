@@ -64,6 +64,8 @@ struct LumpedState {
   double lvVolume = 0;          // m^3
   double laVolume = 0;          // m^3
   double compliancePressure = 0;  // Pa, P_c of the Windkessel
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 };
 
 // Activation of the ventricle and the atrium during one step, each in [0, 1] (the ventricle's
@@ -112,6 +114,9 @@ class LumpedCirculation {
   [[nodiscard]] const LumpedParameters& parameters() const { return m_parameters; }
   // The relations the loop moves between, with the effective (beating-share) contractility.
   [[nodiscard]] PressureVolumeRelations relations(double beatingShare = 1) const;
+  // Checkpoints: the state and the last step (the parameters come from the scenario).
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 
   // Pressures of the state for an activation (Pa).
   [[nodiscard]] double lvPressure(double volume, double activation) const;

@@ -207,4 +207,57 @@ RunSummary RunMonitor::summary() const {
   return r;
 }
 
+void Verdict::save(pbd::StateWriter& w) const { w.fields(issue.check, issue.what, step, time); }
+
+void Verdict::load(pbd::StateReader& r) { r.fields(issue.check, issue.what, step, time); }
+
+void StepSample::save(pbd::StateWriter& w) const {
+  w.fields(step, startTime, time, phase, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
+           contraction, baseDescent, vesselFill);
+}
+
+void StepSample::load(pbd::StateReader& r) {
+  r.fields(step, startTime, time, phase, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
+           contraction, baseDescent, vesselFill);
+}
+
+void RunExtremes::save(pbd::StateWriter& w) const {
+  w.fields(volumeErrorMax, volumeErrorMeanSum, cavityMin, cavityMax, bloodLostMax, bloodInsideWallMax, bloodSpeedMax,
+           lastSecondFrom, densityErrorMeanSum, densityErrorMax, lastSecondSteps);
+}
+
+void RunExtremes::load(pbd::StateReader& r) {
+  r.fields(volumeErrorMax, volumeErrorMeanSum, cavityMin, cavityMax, bloodLostMax, bloodInsideWallMax, bloodSpeedMax,
+           lastSecondFrom, densityErrorMeanSum, densityErrorMax, lastSecondSteps);
+}
+
+void RunMonitor::save(pbd::StateWriter& w) const {
+  w.section("run monitor");
+  w.fields(m_verdict, m_last, m_beats, m_circulation.has_value());
+  if (m_circulation) m_circulation->save(w);
+  w.fields(m_extremes, m_observed);
+}
+
+void RunMonitor::load(pbd::StateReader& r) {
+  r.section("run monitor");
+  r.fields(m_verdict, m_last, m_beats);
+  const std::size_t at = r.offset();
+  bool circulation = false;
+  r.get(circulation);
+  if (circulation != m_circulation.has_value())
+    throw pbd::StateError(circulation ? "run monitor: a circulation record saved, but this monitor keeps none"
+                                      : "run monitor: the circulation record is missing",
+                          at);
+  if (m_circulation) m_circulation->load(r);
+  r.fields(m_extremes, m_observed);
+  // The density error is averaged over the last second before this run's end: a window that
+  // begins after the checkpoint starts empty; one that began before it keeps what it holds.
+  const double from = m_settings.endTime - 1.0;
+  if (from != m_extremes.lastSecondFrom && m_sim.time() <= from) {
+    m_extremes.densityErrorMeanSum = m_extremes.densityErrorMax = 0;
+    m_extremes.lastSecondSteps = 0;
+  }
+  m_extremes.lastSecondFrom = from;
+}
+
 }  // namespace hs::cardiac

@@ -44,6 +44,8 @@ struct Verdict {
   std::int64_t step = 0;
   double time = 0;  // s
   [[nodiscard]] bool healthy() const { return issue.check == HealthCheck::Healthy; }
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
   // One line: "simulation became invalid at step 12 (t = 0.06 s): <what>".
   [[nodiscard]] std::string message() const;
 };
@@ -74,6 +76,8 @@ struct StepSample {
   std::optional<CirculationSample> lumped;
   double contraction = 0, baseDescent = 0, vesselFill = 1;
   [[nodiscard]] double pressure(FlowRegion region) const { return flowStep.pressure[std::size_t(region)]; }
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 };
 
 // Extremes and means over the steps of a run. Blood's density error counts over the last
@@ -90,6 +94,8 @@ struct RunExtremes {
   double densityErrorMeanSum = 0, densityErrorMax = 0;
   std::size_t lastSecondSteps = 0;
   void add(const StepSample& sample, bool heart);
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 };
 
 // What a finished run reports (summary.json's figures), read once at its end.
@@ -151,6 +157,12 @@ class RunMonitor {
   [[nodiscard]] const RunExtremes& extremes() const { return m_extremes; }
   [[nodiscard]] std::int64_t observedSteps() const { return m_observed; }
   [[nodiscard]] RunSummary summary() const;
+  // Checkpoints: what the monitor has gathered, so that a resumed run reports the whole run.
+  // The settings are the reader's: a run resumed toward another end time averages the density
+  // over its own last second, from the samples after the checkpoint when that second begins
+  // after it.
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 
  private:
   const HeartSimulation& m_sim;

@@ -57,4 +57,30 @@ void Valves::gateParticles(pbd::Particles& particles, Index first) const {
   for (std::size_t i = first; i < particles.size(); ++i) gate(particles.position[i], particles.predicted[i]);
 }
 
+void ValveStates::save(pbd::StateWriter& w) const {
+  w.fields(mitralOpen, aorticOpen);
+}
+
+void ValveStates::load(pbd::StateReader& r) {
+  r.fields(mitralOpen, aorticOpen);
+}
+
+void ValvePressures::save(pbd::StateWriter& w) const {
+  w.fields(mitralUpstream, mitralDownstream, aorticUpstream, aorticDownstream);
+}
+
+void ValvePressures::load(pbd::StateReader& r) {
+  r.fields(mitralUpstream, mitralDownstream, aorticUpstream, aorticDownstream);
+}
+
+void Valves::save(pbd::StateWriter& w) const {
+  w.section("valves");
+  w.fields(m_states);
+}
+
+void Valves::load(pbd::StateReader& r) {
+  r.section("valves");
+  r.fields(m_states);
+}
+
 }  // namespace hs::cardiac

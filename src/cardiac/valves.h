@@ -24,11 +24,15 @@ using pbd::Index;
 struct ValveStates {
   bool mitralOpen = true;
   bool aorticOpen = true;
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 };
 
 // The pressures (Pa) just before and after each valve, as the pressure mode compares them.
 struct ValvePressures {
   double mitralUpstream = 0, mitralDownstream = 0, aorticUpstream = 0, aorticDownstream = 0;
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 };
 
 // Which valves are open in timing mode for the wall's phase.
@@ -57,6 +61,9 @@ class Valves {
   // (m, smaller than the orifice); the ring around it stays shut.
   void narrowAorticOpening(Real radius) { m_aorticOpening = radius; }
   [[nodiscard]] const ValveStates& states() const { return m_states; }
+  // Checkpoints: the valves' states (their orifices follow the wall at every step's start).
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 
   // Closed valves as walls: for the fluid solver's working positions (points[k] is particle
   // ids[k]), and for the particle set's predictions of [first, end).

@@ -102,4 +102,14 @@ void VesselEnds::hold(pbd::Particles& particles) const {
     particles.predicted[m_plug[k]] = plugHeight(particles.predicted[m_plug[k]], k);
 }
 
+void VesselEnds::save(pbd::StateWriter& w) const {
+  w.section("vessel ends");
+  w.fields(m_inflowSpeed, m_outflowSpeed, m_lumpedOutflowSpeed, m_owed);
+}
+
+void VesselEnds::load(pbd::StateReader& r) {
+  r.section("vessel ends");
+  r.fields(m_inflowSpeed, m_outflowSpeed, m_lumpedOutflowSpeed, m_owed);
+}
+
 }  // namespace hs::cardiac

@@ -18,6 +18,7 @@
 #include "cardiac/flow_path.h"
 #include "cardiac/scenario.h"
 #include "pbd/particles.h"
+#include "pbd/state_stream.h"
 
 namespace hs::cardiac {
 
@@ -41,6 +42,10 @@ class VesselEnds {
   [[nodiscard]] Real outflowSpeed() const { return m_outflowSpeed; }  // m/s, out of the heart
   // Volume (m^3) the lumped aortic flow has taken that the outflow's plug has not let out yet.
   [[nodiscard]] double outflowOwed() const { return m_owed; }
+  // Checkpoints: the plugs' speeds and the volume owed (the plugs themselves are found anew
+  // in every drive()).
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 
  private:
   [[nodiscard]] bool inInflowBuffer(const Vec3& x) const;

@@ -152,4 +152,14 @@ void VolumeDrivenWall::drive(const std::vector<Vec3>& positions, std::vector<Vec
   placeAll(a, predicted, m_firstParticle);
 }
 
+void VolumeDrivenWall::save(pbd::StateWriter& w) const {
+  w.section("driven wall");
+  w.fields(m_contraction, m_lastPredicted, m_started);
+}
+
+void VolumeDrivenWall::load(pbd::StateReader& r) {
+  r.section("driven wall");
+  r.fields(m_contraction, m_lastPredicted, m_started);
+}
+
 }  // namespace hs::cardiac

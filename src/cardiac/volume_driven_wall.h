@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "cardiac/lv_model.h"
+#include "pbd/state_stream.h"
 
 namespace hs::cardiac {
 
@@ -56,6 +57,9 @@ class VolumeDrivenWall {
   [[nodiscard]] double predictedVolume(double a) const;
   // Base-plane descent at contraction a (m), along the long axis.
   [[nodiscard]] double baseDescent(double a) const;
+  // Checkpoints: the last step's contraction and predicted volume.
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
 
  private:
   // How a driven vertex moves: `kind` picks the map, `share` is the descent share of a vessel

@@ -15,8 +15,9 @@ struct RunTiming {
   double setupSeconds = 0;  // scenario and model
   double wallSeconds = 0;   // stepping only
   int threads = 1;
+  std::int64_t resumedAtStep = 0;  // a run resumed from a checkpoint timed only the steps after it
   [[nodiscard]] double stepsPerSecond(std::int64_t steps) const {
-    return wallSeconds > 0 ? double(steps) / wallSeconds : 0.0;
+    return wallSeconds > 0 ? double(steps - resumedAtStep) / wallSeconds : 0.0;
   }
 };
 

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "cardiac/scenario.h"
+#include "pbd/state_stream.h"
 
 namespace hs::io {
 
@@ -55,5 +56,16 @@ std::vector<ScenarioKeyInfo> scenarioKeys();
 // parseScenario(scenarioToToml(s), ...) gives back s. Useful to record the resolved scenario
 // of a run.
 std::string scenarioToToml(const cardiac::Scenario& scenario);
+
+// Every key's exact value, by name (checkpoints, io/checkpoint.h: the TOML text rounds a
+// clinical unit's conversion). loadScenarioValues expects the same keys in the same order and
+// throws pbd::StateError naming the first that is not.
+void saveScenarioValues(const cardiac::Scenario& scenario, pbd::StateWriter& w);
+void loadScenarioValues(cardiac::Scenario& scenario, pbd::StateReader& r);
+// The first key, outside the tables named in `ignoredTables` (e.g. "output") and the keys in
+// `ignoredKeys`, whose exact value differs between a and b, as "KEY: A-TEXT vs B-TEXT"; "" when
+// none does.
+std::string firstDifferentKey(const cardiac::Scenario& a, const cardiac::Scenario& b,
+                              const std::vector<std::string>& ignoredTables, const std::vector<std::string>& ignoredKeys);
 
 }  // namespace hs::io

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cardiac/scenario.h"
+#include "pbd/state_stream.h"
 
 namespace hs::io::detail {
 
@@ -31,6 +32,10 @@ struct KeySpec {
   bool stringLike = false;  // string or choice: a --set VALUE that is not TOML is taken literally
   std::function<void(cardiac::Scenario&, const toml::node&)> set;  // throws ValueError
   std::function<std::string(const cardiac::Scenario&)> get;        // TOML text of the value
+  // The field's exact value for checkpoints (io/checkpoint.h), which the TOML text need not
+  // keep: a clinical unit's conversion, a double printed at the precision of Real.
+  std::function<void(const cardiac::Scenario&, pbd::StateWriter&)> save;
+  std::function<void(cardiac::Scenario&, pbd::StateReader&)> load;
 };
 
 struct TableSpec {

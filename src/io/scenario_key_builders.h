@@ -95,6 +95,13 @@ inline std::string intRangeText(std::int64_t lo, std::int64_t hi, std::int64_t t
 
 // ---- Row builders ----
 
+// The exact value of a field for checkpoints, whatever its type.
+template <class F>
+void addExactValue(KeySpec& k, F field) {
+  k.save = [field](const Scenario& s, pbd::StateWriter& w) { w.put(fieldOf(field, s)); };
+  k.load = [field](Scenario& s, pbd::StateReader& r) { r.get(field(s)); };
+}
+
 inline KeySpec makeSpec(std::string name, std::string type, std::string unit, std::string range,
                         std::string doc) {
   KeySpec k;
@@ -116,6 +123,7 @@ KeySpec clinicalKey(std::string name, F field, double toSi, Range range, std::st
     field(s) = static_cast<T>(double(readReal(n, range, expect)) * toSi);
   };
   k.get = [field, toSi](const Scenario& s) { return formatReal(static_cast<Real>(double(fieldOf(field, s)) / toSi)); };
+  addExactValue(k, field);
   return k;
 }
 
@@ -140,6 +148,7 @@ KeySpec intKey(std::string name, F field, std::int64_t lo, std::string unit, std
     field(s) = static_cast<T>(readInt(n, lo, hi, expect));
   };
   k.get = [field](const Scenario& s) { return std::to_string(fieldOf(field, s)); };
+  addExactValue(k, field);
   return k;
 }
 
@@ -153,6 +162,7 @@ KeySpec boolKey(std::string name, F field, std::string doc) {
     field(s) = b->get();
   };
   k.get = [field](const Scenario& s) { return std::string(fieldOf(field, s) ? "true" : "false"); };
+  addExactValue(k, field);
   return k;
 }
 
@@ -168,6 +178,7 @@ KeySpec stringKey(std::string name, F field, bool nonEmpty, std::string doc) {
     field(s) = str->get();
   };
   k.get = [field](const Scenario& s) { return quoteString(fieldOf(field, s)); };
+  addExactValue(k, field);
   return k;
 }
 
@@ -195,6 +206,7 @@ KeySpec choiceKey(std::string name, F field, std::vector<std::pair<std::string, 
       if (fieldOf(field, s) == value) return quoteString(text);
     return std::string("\"?\"");
   };
+  addExactValue(k, field);
   return k;
 }
 
@@ -219,6 +231,7 @@ KeySpec vec3Key(std::string name, F field, std::string unit, std::string doc) {
     const Vec3& v = fieldOf(field, s);
     return "[" + formatReal(v.x()) + ", " + formatReal(v.y()) + ", " + formatReal(v.z()) + "]";
   };
+  addExactValue(k, field);
   return k;
 }
 
@@ -256,6 +269,7 @@ KeySpec intListKey(std::string name, F field, std::int64_t lo, std::int64_t hi, 
     for (const auto& v : fieldOf(field, s)) t += (t.size() > 1 ? ", " : "") + std::to_string(v);
     return t + "]";
   };
+  addExactValue(k, field);
   return k;
 }
 

@@ -12,6 +12,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "pbd/state_stream.h"
 #include "pbd/types.h"
 
 namespace hs::pbd {
@@ -43,6 +44,23 @@ struct Particles {
     id.push_back(index);
     state.push_back(ParticleState::Active);
     return index;
+  }
+
+  // Checkpoints (state_stream.h): every column. A set of another size is another scenario's.
+  void save(StateWriter& w) const {
+    w.section("particles");
+    w.fields(position, predicted, velocity, inverseMass, kind, id, state);
+  }
+  void load(StateReader& r) {
+    r.section("particles");
+    const std::size_t n = size();
+    r.getSized(position, n, "particles: positions");
+    r.getSized(predicted, n, "particles: predictions");
+    r.getSized(velocity, n, "particles: velocities");
+    r.getSized(inverseMass, n, "particles: inverse masses");
+    r.getSized(kind, n, "particles: kinds");
+    r.getSized(id, n, "particles: ids");
+    r.getSized(state, n, "particles: states");
   }
 };
 

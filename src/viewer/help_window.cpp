@@ -88,6 +88,7 @@ constexpr const char* kKeys[][2] = {
     {"S", "single step (pauses)"},
     {"Backspace", "restart the scenario"},
     {"P", "picture (PNG in the working directory)"},
+    {"F5", "save the state (checkpoint in the working directory; view --resume FILE loads it)"},
     {"N", "labels and flow arrows on / off"},
     {"B", "paint mode on / off (beating region)"},
     {"left drag (paint mode)", "add the wall under the brush"},

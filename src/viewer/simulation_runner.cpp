@@ -139,8 +139,10 @@ SimulationRunner::~SimulationRunner() {
   m_worker.join();
 }
 
-void SimulationRunner::start(const cardiac::Scenario& scenario) {
+void SimulationRunner::start(const cardiac::Scenario& scenario,
+                             const std::function<void(cardiac::HeartSimulation&)>& prepare) {
   auto sim = std::make_unique<cardiac::HeartSimulation>(scenario, m_threads);
+  if (prepare) prepare(*sim);
   // The panel keeps its own bounded beat readout: the monitor lists no beats.
   cardiac::MonitorSettings settings;
   settings.beatList = false;

@@ -13,6 +13,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -69,8 +70,10 @@ class SimulationRunner {
 
   // A new simulation of `scenario` from t = 0 (also a restart). Built before the lock is
   // taken, so the one running keeps running meanwhile and stays when this throws
-  // (std::invalid_argument: the model or cycle rejected the scenario).
-  void start(const cardiac::Scenario& scenario);
+  // (std::invalid_argument: the model or cycle rejected the scenario). `prepare`, when given,
+  // acts on the new simulation before anything watches it (a checkpoint's state loaded).
+  void start(const cardiac::Scenario& scenario,
+             const std::function<void(cardiac::HeartSimulation&)>& prepare = {});
 
   // Runs fn(SimulationState&) on the calling (main) thread with the worker held between steps.
   template <class Fn>

@@ -76,6 +76,9 @@ void simulationSection(ViewerControls& c, const ViewerStatus& s) {
   ImGui::SameLine();
   if (ImGui::Button("Help")) c.showHelp = !c.showHelp;
   tooltip("What the numbers, colours and controls mean; mouse and keys (H or F1)");
+  if (ImGui::Button("Save state")) c.saveStateRequested = true;
+  tooltip("Save the whole simulation as checkpoint_<time>s.hsck in the working directory (F5); "
+          "heartsim view --resume FILE or heartsim run --resume FILE continues it from there");
   ImGui::SliderFloat("speed", &c.speed, 0.01f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
   tooltip("Simulated seconds per second of wall-clock time (1x = real time)");
   if (const std::string shortfall = speedShortfall(double(c.speed), s); !shortfall.empty()) {

@@ -49,6 +49,7 @@ struct ViewerControls {
   bool scenarioChanged = false;
   bool cycleChanged = false;  // cycle on/off, heart rate or contraction: restarts the simulation
   bool screenshotRequested = false;
+  bool saveStateRequested = false;  // a checkpoint into the working directory (F5)
   bool resetCameraRequested = false;
   std::optional<render::View> viewRequested;
 };

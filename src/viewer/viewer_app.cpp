@@ -104,7 +104,14 @@ void ViewerApp::startScenario(const cardiac::Scenario& scenario) {
 
 bool ViewerApp::restart(const std::string& change) {
   try {
-    m_runner.start(configuredScenario(m_baseScenario, m_controls, m_region));
+    if (m_options.resume && !m_started) {
+      // heartsim view --resume: the first run is the checkpoint's scenario, from its state.
+      m_runner.start(m_baseScenario, [&](cardiac::HeartSimulation& sim) {
+        io::restoreSimulation(*m_options.resume, sim, m_options.resumeSource);
+      });
+    } else {
+      m_runner.start(configuredScenario(m_baseScenario, m_controls, m_region));
+    }
   } catch (const std::invalid_argument& e) {
     if (!m_started) throw;
     m_status.message = std::string("cannot restart: ") + e.what();
@@ -215,11 +222,27 @@ void ViewerApp::applyRequests() {
                          std::to_string(m_region.selection().selectableCount()) +
                          " wall points beat; restarted from t = 0";
   }
+  if (c.saveStateRequested) saveState();
+  c.saveStateRequested = false;
   if (c.viewRequested) resetCamera(*c.viewRequested);
   if (c.resetCameraRequested) resetCamera(render::View::Front);
   c.scenarioChanged = c.resetRequested = c.cycleChanged = c.resetCameraRequested = c.blood.changed = false;
   c.circulation.changed = c.circulation.defaultsRequested = false;
   c.viewRequested.reset();
+}
+
+// The simulation as it is, as a checkpoint in the working directory (io/checkpoint.h), which
+// heartsim view --resume or heartsim run --resume continues.
+void ViewerApp::saveState() {
+  const io::Checkpoint checkpoint =
+      m_runner.access([](SimulationState& s) { return io::captureCheckpoint(*s.sim, nullptr); });
+  const std::string name = io::checkpointFileName(checkpoint.time);
+  try {
+    io::writeCheckpointFile(name, checkpoint);
+    m_status.message = "state saved: " + name + " (heartsim view --resume " + name + ")";
+  } catch (const io::CheckpointError& e) {
+    m_status.message = std::string("saving the state failed: ") + e.what();
+  }
 }
 
 void ViewerApp::paintStroke(float x0, float y0, float x1, float y1, int width, int height, bool erase) {

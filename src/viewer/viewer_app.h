@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cardiac/scenario.h"
+#include "io/checkpoint.h"
 #include "viewer/lesson.h"
 
 namespace hs::viewer {
@@ -26,6 +27,9 @@ struct ViewerOptions {
   std::string screenshot;          // non-empty: save the last frame there as PNG
   int threads = 1;                 // simulation worker threads
   std::optional<Lesson> lesson;    // a lesson to run (lesson.h); scripted when frames > 0
+  // --resume FILE: the checkpoint to start from (its scenario is `scenario`) and the file's name.
+  std::optional<io::Checkpoint> resume;
+  std::string resumeSource;
 };
 
 // Opens the window and runs until it is closed (or `frames` have been drawn). Throws

@@ -117,6 +117,7 @@ class ViewerApp {
   void handleInput();
 
   void applyRequests();
+  void saveState();
 
   // Paints along the cursor's path since the last frame (window pixels), every half brush
   // radius, so a fast stroke leaves no gaps.

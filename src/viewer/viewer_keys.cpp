@@ -42,6 +42,7 @@ bool applyKeys(std::span<const KeyPress> presses, ViewerControls& c, bool paintA
       case GLFW_KEY_SPACE: c.playing = !c.playing; break;
       case GLFW_KEY_BACKSPACE: c.resetRequested = true; break;
       case GLFW_KEY_P: c.screenshotRequested = true; break;
+      case GLFW_KEY_F5: c.saveStateRequested = true; break;
       case GLFW_KEY_H:
       case GLFW_KEY_F1: c.showHelp = !c.showHelp; break;
       case GLFW_KEY_C: c.showCirculation = !c.showCirculation; break;

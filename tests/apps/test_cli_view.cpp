@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
 
@@ -55,6 +56,26 @@ TEST_F(ViewUnderXvfb, HeartOnlyScreenshotShowsTheWall) {
   EXPECT_GT(variance(image), 200.0);
   // The wall covers a good part of the scene beside the panel.
   EXPECT_GT(countPixels(image, wallRed), 640 * 480 / 20);
+}
+
+// A checkpoint written by `heartsim run` opens in the viewer, which goes on from its state.
+TEST_F(ViewUnderXvfb, ResumedCheckpointShowsTheWall) {
+  const fs::path dir = scratchDir("view_resume");
+  const CliResult made = runHeartsim("run heart-only --duration 0.1 --checkpoint-every 0.1 --out made", dir);
+  ASSERT_EQ(made.exitCode, 0) << made.err;
+  const CliResult r = view("--resume made/checkpoint_0000.100s.hsck --frames 30 --screenshot s.png --size 640x480", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const hs::viz::Image image = hs::viz::Image::loadPng((dir / "s.png").string());
+  EXPECT_GT(countPixels(image, wallRed), 640 * 480 / 20);
+}
+
+// A bad checkpoint stops the viewer with exit 2 and one line before any window is opened.
+TEST(ViewCommand, BadCheckpointExitsTwoWithoutAWindow) {
+  const fs::path dir = scratchDir("view_bad_resume");
+  std::ofstream(dir / "bad.hsck") << "not a checkpoint";
+  const CliResult r = runHeartsim("view --resume bad.hsck --frames 1", dir);
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("bad.hsck: bad magic"), std::string::npos) << r.err;
 }
 
 TEST_F(ViewUnderXvfb, FluidAtRestScreenshotShowsTheBlood) {

@@ -66,6 +66,15 @@ TEST(ViewerKeys, EscapeQuitsAndEnterApplies) {
   EXPECT_TRUE(applyKeys(std::vector{escape}, controls, true));
 }
 
+TEST(ViewerKeys, F5SavesTheState) {
+  ViewerControls controls;
+  EXPECT_FALSE(applyKeys(std::vector{KeyPress{GLFW_KEY_F5, false, false}}, controls, true));
+  EXPECT_TRUE(controls.saveStateRequested);
+  controls.saveStateRequested = false;
+  applyKeys(std::vector{KeyPress{GLFW_KEY_F5, true, false}}, controls, true);
+  EXPECT_FALSE(controls.saveStateRequested) << "a held F5 writes one checkpoint, not one per repeat";
+}
+
 TEST(ViewerKeys, EscapeClosesAnOpenWindowBeforeItQuits) {
   ViewerControls controls;
   controls.showHelp = controls.pump.showCompare = true;
