@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # scripts/fuzz.sh [SECONDS] [TARGET...]: builds the libFuzzer targets (fuzz/, clang with ASan and
 # UBSan: the `fuzz` preset) and runs each for SECONDS (default 60) on one core, seeded with the
-# built-in scenarios and lessons. A crash leaves its input in build/fuzz/findings/<target>/ and
-# makes the script exit non-zero. Installs clang and libFuzzer first if they are missing.
+# built-in scenarios and lessons, and with a checkpoint of `normal` written by the release build
+# (or by $HEARTSIM when set). A crash leaves its input in build/fuzz/findings/<target>/ and makes
+# the script exit non-zero. Installs clang and libFuzzer first if they are missing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(fuzz_scenario fuzz_set fuzz_lesson)
+[ ${#targets[@]} -eq 0 ] && targets=(fuzz_scenario fuzz_set fuzz_lesson fuzz_checkpoint)
 scripts/install-deps.sh --fuzz
 scripts/build.sh fuzz "${targets[@]}"
 status=0
@@ -18,6 +19,14 @@ for t in "${targets[@]}"; do
   case $t in
     fuzz_scenario) cp -n scenarios/*.toml "$corpus"/ ;;
     fuzz_lesson) cp -n lessons/*.toml "$corpus"/ ;;
+    fuzz_checkpoint)  # two checkpoints of `normal`: without and with the run monitor's state
+      if [ ! -f "$corpus/normal-run.hsck" ]; then
+        heartsim=${HEARTSIM:-build/release/apps/heartsim}
+        [ -n "${HEARTSIM:-}" ] || scripts/build.sh release heartsim
+        seed=build/fuzz/seed
+        "$heartsim" run normal --duration 0.004 --checkpoint-every 0.002 --out "$seed" >/dev/null
+        cp "$seed/$(ls "$seed" | grep hsck | tail -1)" "$corpus/normal-run.hsck"
+      fi ;;
     fuzz_set) for s in "cycle.heart_rate_bpm=90" "blood.particles=3000" "simulation.gravity=[0,-9.81,0]" \
                        "circulation.valves=pressure" "cycle.segments=[1,2,7]" "model.resolution=1.5"; do
                 printf '%s' "$s" > "$corpus/$(printf '%s' "$s" | md5sum | cut -c1-12)"; done ;;
