@@ -11,6 +11,7 @@ shift || true
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=(fuzz_scenario fuzz_set fuzz_lesson fuzz_checkpoint)
 scripts/install-deps.sh --fuzz
+cmake --preset fuzz >&2  # every time: a target added to fuzz/ since the last configure
 scripts/build.sh fuzz "${targets[@]}"
 status=0
 for t in "${targets[@]}"; do
