@@ -23,6 +23,7 @@ namespace {
 // Messages are one line: newlines (e.g. from toml++'s description) become spaces.
 [[noreturn]] void fail(std::string message) {
   std::replace(message.begin(), message.end(), '\n', ' ');
+  std::replace(message.begin(), message.end(), '\r', ' ');
   throw LessonError(message);
 }
 

@@ -190,3 +190,22 @@ TEST(LessonText, FillsFiguresNowAndMarked) {
 
 }  // namespace
 }  // namespace hs::viewer
+
+namespace hs::viewer {
+namespace {
+
+// Found by fuzz_lesson: a carriage return after a bad number came back inside the message.
+TEST(LessonFile, AControlCharacterInABadValueStillGivesOneLine) {
+  try {
+    (void)parseLesson("# a lesson\nsegments = [[i\r-\x04ystolic \x08r", "fuzz.toml");
+    FAIL() << "accepted";
+  } catch (const LessonError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.find('\r'), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_EQ(message.rfind("fuzz.toml:2:", 0), 0u) << message;
+  }
+}
+
+}  // namespace
+}  // namespace hs::viewer
