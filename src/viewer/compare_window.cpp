@@ -10,6 +10,7 @@
 #include "cardiac/clinical_units.h"
 #include "viewer/chart_drawing.h"
 #include "viewer/plot_widget.h"
+#include "viewer/pv_loop_panel.h"
 
 namespace hs::viewer {
 namespace {
@@ -18,8 +19,6 @@ using cardiac::CirculationSample;
 using cardiac::kCubicMetresPerMl;
 using cardiac::kPascalPerMmHg;
 
-constexpr ImU32 kNowColour = IM_COL32(175, 25, 40, 255);
-constexpr ImU32 kBeforeLine = IM_COL32(140, 140, 140, 255);
 
 struct CompareRow {
   const char* name;
@@ -87,8 +86,8 @@ void numbers(const RunComparison& runs) {
 
 // The runs' names are in the table's heads above: the legend names the columns.
 void legend(ImDrawList* draw, ImVec2 at, const RunComparison& runs) {
-  const float x = drawLegendEntry(draw, at, kNowColour, "now");
-  if (runs.previous()) drawLegendEntry(draw, ImVec2(x, at.y), kBeforeLine, "before");
+  const float x = drawLegendEntry(draw, at, kLoopColour, "now");
+  if (runs.previous()) drawLegendEntry(draw, ImVec2(x, at.y), kBeforeLoopColour, "before");
 }
 
 // Both runs' cavity volume over their last complete beat, from the start of systole.
@@ -118,7 +117,7 @@ void volumeCurves(const RunComparison& runs, const PlotHistory& history, const P
     std::vector<ImVec2> points;
     for (const PumpSample& s : *curve) points.push_back(f.at(s.time, s.cavity * scale));
     if (points.size() >= 2)
-      draw->AddPolyline(points.data(), int(points.size()), curve == &now ? kNowColour : kBeforeLine, 0,
+      draw->AddPolyline(points.data(), int(points.size()), curve == &now ? kLoopColour : kBeforeLoopColour, 0,
                         curve == &now ? 2.2f : 2.0f);
   }
   if (now.empty() && before.empty())
@@ -157,14 +156,8 @@ void loops(const RunComparison& runs, const CirculationHistory& circulation, ImV
   drawChartGrid(draw, f, ticksFitting(f.x1 - f.x0, 42), ticksFitting(f.y1 - f.y0, line * 1.8f), true);
   drawCentredText(draw, (f.x0 + f.x1) / 2, f.y1 + line + 4, kChartText, "LV volume (mL); LV pressure (mmHg) up");
   draw->PushClipRect(ImVec2(f.x0, f.y0), ImVec2(f.x1 + 1, f.y1 + 1), true);
-  for (const auto* loop : {&before, &now}) {
-    std::vector<ImVec2> points;
-    for (const CirculationSample& s : *loop)
-      points.push_back(f.at(s.lvVolume / kCubicMetresPerMl, s.lvPressure / kPascalPerMmHg));
-    if (points.size() >= 2)
-      draw->AddPolyline(points.data(), int(points.size()), loop == &now ? kNowColour : kBeforeLine,
-                        ImDrawFlags_Closed, 2.0f);
-  }
+  drawPressureVolumeBeat(draw, f, before, kBeforeLoopColour, 2.0f, true);
+  drawPressureVolumeBeat(draw, f, now, kLoopColour, 2.0f, true);
   draw->PopClipRect();
   drawChartBorder(draw, f);
 }

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "viewer/chart_drawing.h"
 #include "viewer/run_comparison.h"
 
 namespace hs::viewer {
@@ -19,15 +20,6 @@ struct Frame {
   float x(double t) const { return x0 + float((t - t0) / (t1 - t0)) * (x1 - x0); }
   float y(double v) const { return y1 - float((v - range.lo) / (range.hi - range.lo)) * (y1 - y0); }
 };
-
-// Tick labels with as many decimals as the step needs.
-std::string formatTick(double value, double step) {
-  char text[32];
-  const int decimals = std::clamp(int(-std::floor(std::log10(step) + 1e-9)), 0, 6);
-  if (std::abs(value) < step * 1e-6) value = 0;  // no "-0"
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  return text;
-}
 
 std::string valueWithUnits(const PlotSpec& spec, double shown) {
   std::string text = formatValue(shown) + " " + spec.unit;
@@ -75,7 +67,7 @@ void drawAxes(ImDrawList* draw, const Frame& f) {
     const float y = std::round(f.y(v));
     draw->AddLine(ImVec2(f.x0, y), ImVec2(f.x1, y),
                   std::abs(v) < yt.step * 1e-6 ? IM_COL32(160, 160, 170, 255) : grid);
-    const std::string label = formatTick(v, yt.step);
+    const std::string label = tickLabel(v, yt.step);
     const ImVec2 size = ImGui::CalcTextSize(label.c_str());
     draw->AddText(ImVec2(f.x0 - 4 - size.x, y - size.y / 2), text, label.c_str());
   }
@@ -84,7 +76,7 @@ void drawAxes(ImDrawList* draw, const Frame& f) {
     const double t = xt.first + i * xt.step;
     const float x = std::round(f.x(t));
     draw->AddLine(ImVec2(x, f.y0), ImVec2(x, f.y1), grid);
-    const std::string label = formatTick(t, xt.step);
+    const std::string label = tickLabel(t, xt.step);
     const float w = ImGui::CalcTextSize(label.c_str()).x;
     draw->AddText(ImVec2(std::clamp(x - w / 2, f.x0, f.x1 - w), f.y1 + 2), text, label.c_str());
   }

@@ -17,11 +17,9 @@ using cardiac::CirculationSample;
 using cardiac::kCubicMetresPerMl;
 using cardiac::kPascalPerMmHg;
 
-constexpr ImU32 kLoopColour = IM_COL32(175, 25, 40, 255);
 constexpr ImU32 kEndSystolicColour = IM_COL32(45, 70, 150, 255);
 constexpr ImU32 kEndDiastolicColour = IM_COL32(20, 125, 105, 255);
 constexpr ImU32 kEventColour = IM_COL32(50, 50, 60, 255);
-constexpr ImU32 kBeforeLoopColour = IM_COL32(150, 150, 150, 255);  // the run before the restart
 // The loops drawn, newest first: how strong each is.
 constexpr std::array<float, 3> kLoopAlpha = {1.0f, 0.42f, 0.2f};
 constexpr std::array<float, 3> kLoopThickness = {2.6f, 1.7f, 1.3f};
@@ -42,18 +40,7 @@ ImVec2 point(const ChartFrame& f, const CirculationSample& s) {
   return f.at(s.lvVolume / kCubicMetresPerMl, s.lvPressure / kPascalPerMmHg);
 }
 
-// One beat's loop; points closer than a pixel to the last one kept are skipped.
-void drawLoop(ImDrawList* draw, const ChartFrame& f, std::span<const CirculationSample> beat, ImU32 colour,
-              float thickness) {
-  std::vector<ImVec2> points;
-  points.reserve(beat.size());
-  for (const CirculationSample& s : beat) {
-    const ImVec2 p = point(f, s);
-    if (!points.empty() && std::abs(p.x - points.back().x) + std::abs(p.y - points.back().y) < 1) continue;
-    points.push_back(p);
-  }
-  if (points.size() >= 2) draw->AddPolyline(points.data(), int(points.size()), colour, 0, thickness);
-}
+
 
 // ESPVR: the straight line from (V0, 0); EDPVR: the exponential, both across the frame (clipped
 // by the caller), each named where it leaves the frame's upper or right side.
@@ -129,6 +116,19 @@ void hoverReadout(const ChartFrame& f, const CirculationHistory& history) {
 
 }  // namespace
 
+void drawPressureVolumeBeat(ImDrawList* draw, const ChartFrame& f, std::span<const CirculationSample> beat,
+                            ImU32 colour, float thickness, bool closed) {
+  std::vector<ImVec2> points;
+  points.reserve(beat.size());
+  for (const CirculationSample& s : beat) {
+    const ImVec2 p = point(f, s);
+    if (!points.empty() && std::abs(p.x - points.back().x) + std::abs(p.y - points.back().y) < 1) continue;
+    points.push_back(p);
+  }
+  if (points.size() >= 2)
+    draw->AddPolyline(points.data(), int(points.size()), colour, closed ? ImDrawFlags_Closed : 0, thickness);
+}
+
 void drawPressureVolumeLoop(const CirculationHistory& history,
                             const cardiac::PressureVolumeRelations& relations, ImVec2 size,
                             std::span<const CirculationSample> before) {
@@ -170,10 +170,10 @@ void drawPressureVolumeLoop(const CirculationHistory& history,
 
   draw->PushClipRect(ImVec2(f.x0, f.y0), ImVec2(f.x1 + 1, f.y1 + 1), true);
   drawRelations(draw, f, relations);
-  if (before.size() >= 2) drawLoop(draw, f, before, kBeforeLoopColour, 1.8f);
+  if (before.size() >= 2) drawPressureVolumeBeat(draw, f, before, kBeforeLoopColour, 1.8f);
   for (std::size_t k = shown; k-- > 0;) {  // oldest first, so the newest lies on top
     const BeatSpan& b = beats[beats.size() - 1 - k];
-    drawLoop(draw, f, samples.subspan(b.begin, b.size()), fade(kLoopColour, kLoopAlpha[k]),
+    drawPressureVolumeBeat(draw, f, samples.subspan(b.begin, b.size()), fade(kLoopColour, kLoopAlpha[k]),
              kLoopThickness[k]);
   }
   if (const std::optional<BeatSpan> last = lastCompleteBeat(samples, history.beatStarts()))

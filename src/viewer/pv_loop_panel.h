@@ -10,9 +10,19 @@
 #include <span>
 
 #include "cardiac/circulation_trace.h"
+#include "viewer/chart_drawing.h"
 #include "viewer/circulation_history.h"
 
 namespace hs::viewer {
+
+// The loop's colours: a run's beat, and the run before the last restart.
+inline constexpr ImU32 kLoopColour = IM_COL32(175, 25, 40, 255);
+inline constexpr ImU32 kBeforeLoopColour = IM_COL32(150, 150, 150, 255);
+
+// One beat's loop (LV volume in mL across, LV pressure in mmHg up) in the chart `frame`; points
+// closer than a pixel to the last one kept are skipped; `closed` joins the end to the start.
+void drawPressureVolumeBeat(ImDrawList* draw, const ChartFrame& frame, std::span<const cardiac::CirculationSample> beat,
+                            ImU32 colour, float thickness, bool closed = false);
 
 // Draws into a `size` pixels region at the cursor (and advances the cursor past it).
 // `relations`: the effective ones (the beating share scales Ees). `before`: the last loop of the
