@@ -4,10 +4,12 @@
 // beat lengths are random); every bad checkpoint or refused resume exits 2 with one line that
 // names the file and what is wrong.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
@@ -73,7 +75,9 @@ TEST(CliCheckpoint, IrregularResumedGivesTheUninterruptedRun) {
 class BadCheckpoint : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    s_dir = scratchDir("ckpt_bad");
+    // ctest runs each test of the suite in its own process, side by side: each needs its own
+    // folder (a shared one was removed and rewritten under the other, and the suite skipped).
+    s_dir = scratchDir("ckpt_bad_" + std::to_string(::getpid()));
     const CliResult r = runHeartsim("run heart-only --duration 0.1 --checkpoint-every 0.05 --out made", s_dir);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     s_good = readFile(s_dir / "made" / "checkpoint_0000.050s.hsck");
