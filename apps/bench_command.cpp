@@ -46,9 +46,11 @@ struct BenchCase {
 // Steps a simulation for at least `seconds` after a warm-up, in windows of about 0.2 s, and
 // reports the median window's throughput (a shared machine's hiccups land in a few windows;
 // the median ignores them) with the slowest and fastest windows beside it.
-nlohmann::json measure(cardiac::HeartSimulation& sim, std::size_t particles, int threads, double seconds) {
+nlohmann::json measure(cardiac::HeartSimulation& sim, std::size_t particles, int threads, double seconds,
+                       cardiac::StepProfile* profile = nullptr) {
   cardiac::RunMonitor monitor(sim, cardiac::MonitorSettings::healthOnly());
   for (int i = 0; i < 50; ++i) sim.step();  // warm-up: caches, first-touch, lazy allocation
+  if (profile) *profile = {};
   long steps = 0;
   std::vector<double> windowRates;
   const auto start = Clock::now();
@@ -121,6 +123,34 @@ BenchCase damBreakCase(const std::string& name, int nx, int ny, int nz) {
 // A built-in scenario run from t = 0 to its end, as `heartsim run` steps it (the per-step
 // metrics and files left out): three fresh runs, the median's wall time. This is the figure
 // to set beside the thesis's Table 5.5 ("computational time" of its 400-step experiments).
+// A real-size heart with its blood, stepped as the viewer steps it (health checks, no files):
+// the median window's steps per second, and the mean wall time of each stage of a step
+// (cardiac::StepStage) over all measured steps, in milliseconds.
+BenchCase heartCase(const std::string& name) {
+  return {name, "the " + name + " scenario stepped for the measuring time, with each stage's time per step",
+          [name](int threads, double seconds) {
+            const cardiac::Scenario scenario = io::loadScenario(name);
+            cardiac::HeartSimulation sim(scenario, threads);
+            cardiac::StepProfile profile;
+            sim.attachProfile(&profile);
+            const std::size_t blood = sim.particles().size() - sim.firstBloodParticle();
+            nlohmann::json r = measure(sim, blood, threads, seconds, &profile);
+            nlohmann::json stages = nlohmann::json::object();
+            double total = 0;
+            for (std::size_t k = 0; k < profile.seconds.size(); ++k) {
+              const double ms = 1e3 * profile.seconds[k] / double(std::max(1L, profile.steps));
+              stages[std::string(cardiac::kStepStageNames[k])] = ms;
+              total += ms;
+            }
+            r["stages_ms_per_step"] = stages;
+            r["stages_ms_total"] = total;
+            r["iterations"] = scenario.blood.iterations;
+            r["dt_s"] = scenario.simulation.dt;
+            r["real_time_factor"] = r["steps_per_s"].get<double>() * double(scenario.simulation.dt);
+            return r;
+          }};
+}
+
 BenchCase scenarioCase(const std::string& name) {
   return {name, "the " + name + " scenario from t = 0 to its end (median of 3 fresh runs)",
           [name](int threads, double) {
@@ -159,6 +189,9 @@ std::vector<BenchCase> allCases() {
       scenarioCase("paper-vessel-beating"),
       scenarioCase("paper-chamber"),
       scenarioCase("paper-chamber-beating"),
+      heartCase("normal"),
+      heartCase("irregular"),
+      heartCase("inconsistent"),
       damBreakCase("pbf-dam-break-1k", 10, 20, 5),
       damBreakCase("pbf-dam-break-10k", 25, 40, 10),
       damBreakCase("pbf-dam-break-100k", 50, 80, 25),

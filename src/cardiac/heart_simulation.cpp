@@ -183,16 +183,25 @@ void HeartSimulation::reorderBlood() {
 void HeartSimulation::step() {
   const pbd::StepContext context =
       pbd::makeStepContext(m_scenario.simulation.dt, m_scenario.simulation.gravity, m_threads, m_steps);
+  StageLaps laps(m_profile);
   beginStep(context);                                                       // reorder, valves, flow meter
+  laps.lap(StepStage::Begin);
   applyExternalForces(context);                                             // filling pressure, gravity
   pbd::predictPositions(m_particles, context);                              // p = x + dt v
+  laps.lap(StepStage::Forces);
   moveWall(context);                                                        // cardiac cycle, vessels' ends
-  solveBloodDensity(context);                                               // PBF, valves and wall inside
+  laps.lap(StepStage::MoveWall);
+  solveBloodDensity(context, laps);                                         // PBF, valves and wall inside
   pbd::projectConstraints(m_constraints, m_particles, m_solver, context);   // the wall's own constraints
+  laps.lap(StepStage::WallConstraints);
   resolveBloodContacts(context);                                            // valves, wall push-out
+  laps.lap(StepStage::Contacts);
   pbd::updateVelocities(m_particles, m_solver, context);                    // v = (p - x)/dt, x = p
   if (m_fluid) m_fluid->postProcessVelocities(m_particles, context);        // viscosity, XSPH
+  laps.lap(StepStage::Velocities);
   endStep(context);                                                         // flows, the loop
+  laps.lap(StepStage::End);
+  if (m_profile) ++m_profile->steps;
   ++m_steps;
 }
 
@@ -251,23 +260,29 @@ void HeartSimulation::moveWall(const pbd::StepContext& context) {
 // last: the closed-valve disc has the lumen's radius and the wall's faceted lumen lies a
 // little inside it, so the wall has the final word): blood squeezed by the beating wall must
 // not be pushed through it by its own pressure.
-void HeartSimulation::solveBloodDensity(const pbd::StepContext& context) {
+void HeartSimulation::solveBloodDensity(const pbd::StepContext& context, StageLaps& laps) {
   if (!m_fluid) return;
   if (!m_wallContact) {
     m_fluid->projectDensity(m_particles, context);
+    laps.lap(StepStage::DensityKernels);
     return;
   }
   const pbd::ParticleTetSettings contact = wallContactSettings(context);
   m_fluid->beginDensitySolve(m_particles, context);
+  laps.lap(StepStage::Neighbours);
   if (m_scenario.blood.wallDensity) lendWallDensity(context);
+  laps.lap(StepStage::WallLending);
   for (int iteration = 0; iteration < m_fluid->iterations(); ++iteration) {
     m_fluid->iterateDensity(context);
+    laps.lap(StepStage::DensityKernels);
     std::vector<Vec3>& points = m_fluid->workingPositions();
     m_circulation->valves.gatePoints(m_particles, points, m_fluid->slotParticles());
     m_wallContact->resolvePoints(m_particles, points, m_fluid->slotParticles(), contact);
     if (m_ends) m_ends->hold(points, m_fluid->slotParticles());
+    laps.lap(StepStage::WallInIterations);
   }
   m_fluid->endDensitySolve(m_particles, context);
+  laps.lap(StepStage::DensityKernels);
 }
 
 // The wall's surface where it is about to be (its predictions) lends density to the blood

@@ -20,6 +20,7 @@
 #include "cardiac/volume_driven_wall.h"
 #include "cardiac/lv_model.h"
 #include "cardiac/scenario.h"
+#include "cardiac/step_profile.h"
 #include "pbd/fluid_solver.h"
 #include "pbd/particle_tet_collision.h"
 #include "pbd/solver.h"
@@ -44,6 +45,8 @@ class HeartSimulation {
   HeartSimulation(const Scenario& scenario, int threads);
 
   void step();
+  // Wall time per stage of each following step is added to `profile` (null: none, the default).
+  void attachProfile(StepProfile* profile) { m_profile = profile; }
 
   [[nodiscard]] const Scenario& scenario() const { return m_scenario; }
   [[nodiscard]] bool hasHeart() const { return m_model.has_value(); }
@@ -111,7 +114,7 @@ class HeartSimulation {
   void advanceLumpedCirculation(const pbd::StepContext& context);
   void applyExternalForces(const pbd::StepContext& context);
   void moveWall(const pbd::StepContext& context);
-  void solveBloodDensity(const pbd::StepContext& context);
+  void solveBloodDensity(const pbd::StepContext& context, StageLaps& laps);
   void lendWallDensity(const pbd::StepContext& context);
   void resolveBloodContacts(const pbd::StepContext& context);
   void endStep(const pbd::StepContext& context);
@@ -121,6 +124,7 @@ class HeartSimulation {
 
   Scenario m_scenario;
   int m_threads = 1;
+  StepProfile* m_profile = nullptr;  // not owned; see attachProfile
   std::optional<LvModel> m_model;
   pbd::Particles m_particles;
   pbd::ConstraintSet m_constraints;

@@ -14,6 +14,7 @@ namespace {
 // streaming loops save; the same threshold as the neighbour loops of fluid.cpp.
 constexpr std::size_t kParallelThreshold = 256;
 
+
 NeighbourGridSettings gridSettingsFor(int threads) {
   NeighbourGridSettings s;
   s.threads = threads;
@@ -130,7 +131,8 @@ void FluidSolver::iterateDensity(const StepContext& context) {
 
 void FluidSolver::lendWallDensity(const std::vector<Vec3>& wallVertices, const std::vector<Triangle>& wallTriangles,
                                   int threads) {
-  findNearestWalls(wallVertices, wallTriangles, m_p, m_kernels.h, m_wallProximity, threads);
+  m_wallGrid.update(wallVertices, wallTriangles, m_kernels.h, threads);
+  findNearestWalls(m_wallGrid, wallVertices, wallTriangles, m_p, m_wallProximity, threads);
   m_wallStart = m_p;
   m_wallsLend = true;
 }

@@ -133,6 +133,7 @@ class FluidSolver {
   std::vector<Vec3> m_vNew;        // viscosity output
   std::vector<Vec3> m_vorticity;   // vorticity confinement work array
   WallDensityTable m_wallTable;    // for the kernels' support
+  WallTriangleGrid m_wallGrid;     // the wall's triangles (lendWallDensity), buffers kept
   std::vector<WallProximity> m_wallProximity;  // slot: nearest wall, during a solve that lends
   std::vector<Vec3> m_wallStart;   // slot: where it was found
   bool m_wallsLend = false;

@@ -12,9 +12,11 @@
 //   grad_i C_wall  = -G(d) n,      G(d) = int_d^h |W_spiky'(r)| pi (r^2 - d^2) dr
 // (n the unit normal from the wall toward the particle; 2 pi r (r - d) is the area of the sphere
 // of radius r beyond the plane, pi (r^2 - d^2) its projection on n). Both vanish at d >= h.
+#include <array>
 #include <span>
 #include <vector>
 
+#include "pbd/cell_grid.h"
 #include "pbd/mesh_collider.h"
 #include "pbd/tet_mesh.h"
 #include "pbd/sph_kernels.h"
@@ -46,9 +48,35 @@ struct WallProximity {
   Vec3 normal = Vec3::Zero();
 };
 
-// For each point, the closest point on the triangles within `reach` (closest point on each
-// triangle near it, Ericson 5.1.5). A uniform grid of cell `reach` over the triangles' boxes
-// offers the candidates: a point's 27 cells hold every triangle within reach of it.
+// The triangles binned for findNearestWalls: a uniform grid (cells of a third of `reach`) in
+// which each triangle is listed in every cell its box grown by `reach` touches, so that a point's
+// own cell lists every triangle within reach of it. Binned again by each update() (a moving wall),
+// into buffers kept from the last one.
+class WallTriangleGrid {
+ public:
+  void update(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles, Real reach, int threads);
+  [[nodiscard]] bool valid() const { return m_valid; }
+  [[nodiscard]] Real reach() const { return m_reach; }
+  [[nodiscard]] const CellIndexing& cells() const { return m_cells; }
+  [[nodiscard]] const CellGrid& grid() const { return m_grid; }
+  [[nodiscard]] const std::vector<std::array<Vec3, 2>>& boxes() const { return m_boxes; }
+
+ private:
+  CellIndexing m_cells;
+  CellGrid m_grid;
+  std::vector<std::array<Vec3, 2>> m_boxes;  // each triangle's box
+  Real m_reach = 0;
+  bool m_valid = false;
+};
+
+// For each point, the closest point on the triangles within the grid's reach (closest point on
+// each triangle near it, Ericson 5.1.5), from the triangles listed in the point's cell; the
+// triangle with the nearest box is tried first, so that most others' boxes are farther than it.
+// The result is the minimum over all triangles (ties to the lowest id) whatever the grid.
+void findNearestWalls(const WallTriangleGrid& grid, const std::vector<Vec3>& vertices,
+                      const std::vector<Triangle>& triangles, std::span<const Vec3> points,
+                      std::vector<WallProximity>& out, int threads);
+// The same with a grid of its own, made for this call.
 void findNearestWalls(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles,
                       std::span<const Vec3> points, Real reach, std::vector<WallProximity>& out, int threads);
 

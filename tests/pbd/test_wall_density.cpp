@@ -126,6 +126,29 @@ TEST(FindNearestWalls, GridAgreesWithBruteForceBitwise) {
   }
 }
 
+// A grid kept between calls and updated as the surface moves (as the fluid solver keeps it
+// step after step) answers as the brute force does on the surface where it is now.
+TEST(FindNearestWalls, AKeptGridFollowsAMovingSurface) {
+  Box box = boxMesh(Real(0.02));
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<Real> u(Real(-0.01), Real(0.03));
+  std::uniform_real_distribution<Real> wobble(Real(-0.004), Real(0.004));
+  std::vector<Vec3> points(1500);
+  for (Vec3& p : points) p = Vec3(u(rng), u(rng), u(rng));
+  WallTriangleGrid grid;
+  for (int step = 0; step < 4; ++step) {
+    for (Vec3& v : box.x) v += Vec3(wobble(rng), wobble(rng), wobble(rng));
+    grid.update(box.x, box.faces, Real(kH), 2);
+    std::vector<WallProximity> found;
+    findNearestWalls(grid, box.x, box.faces, points, found, 2);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const WallProximity brute = nearestWallBruteForce(box.x, box.faces, points[i], Real(kH));
+      ASSERT_EQ(found[i].distance, brute.distance) << "step " << step << ", point " << i;
+      ASSERT_EQ(found[i].normal, brute.normal) << "step " << step << ", point " << i;
+    }
+  }
+}
+
 TEST(FindNearestWalls, NoTrianglesMeansNoWall) {
   std::vector<WallProximity> found;
   const std::vector<Vec3> points{Vec3::Zero()};
