@@ -88,7 +88,9 @@ void simulationSection(ViewerControls& c, const ViewerStatus& s) {
             "particles (Blood section) run faster.");
   }
   if (s.hasBlood) {
-    ImGui::TextDisabled("%s", resolutionLine(s.resolution, s.realTimeFactor, s.behind).c_str());
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", resolutionLine(s.resolution, s.realTimeFactor, s.behind).c_str());
+    ImGui::PopStyleColor();
     tooltip("The blood's resolution (Blood section): at start-up the viewer measures each level on this "
             "computer and picks the finest that keeps up with real time; a finer one runs in slow motion.");
   }
