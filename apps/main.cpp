@@ -108,6 +108,10 @@ void addViewCommand(CLI::App& app, Commands& c) {
   viewApp->add_option("--lesson", view.lesson,
                       "Run a lesson: a built-in (regional-wall-motion, rhythm, preload-afterload) or a .toml file");
   viewApp->add_option("--resume", view.resume, "Start from a checkpoint file (F5 in the viewer or run --checkpoint-every writes one)");
+  viewApp->add_option("--resolution", view.resolution,
+                      "Blood resolution: coarse, medium, fine (the scenario's), finest, or auto (the finest that "
+                      "holds real time here)")
+      ->capture_default_str();
   addThreadsOption(viewApp, view.threads,
                    "Simulation threads (default: all cores but one, which the drawing needs)");
   addSetOption(viewApp, view.overrides);

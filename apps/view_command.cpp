@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "exit_codes.h"
@@ -22,6 +23,23 @@ bool parseWindowSize(const std::string& text, int& width, int& height) {
          width >= kMin && height >= kMin && width <= kMax && height <= kMax;
 }
 
+// What fixed the blood's particle count, so that the start-up pick keeps it (docs/viewer.md):
+// a lesson, a checkpoint, a scenario file of one's own, or --set on the blood's size; "" for a
+// built-in scenario as it is. `file`: the scenario's file when it is not a built-in.
+std::string bloodFixedBy(const ViewOptions& options, const std::string& file) {
+  if (!options.lesson.empty()) return "as the lesson sets it";
+  if (!options.resume.empty()) return "as the checkpoint has it";
+  for (const std::string& set : options.overrides) {
+    std::string key = set.substr(0, set.find('='));
+    key.erase(key.find_last_not_of(" \t") + 1);
+    key.erase(0, key.find_first_not_of(" \t"));
+    for (const char* size : {"blood.particles", "blood.spacing", "blood.radius", "blood.support_radius"})
+      if (key == size) return "as --set " + key + " sets it";
+  }
+  if (!file.empty()) return "as " + std::filesystem::path(file).filename().string() + " sets it";
+  return "";
+}
+
 }  // namespace
 
 int viewCommand(const ViewOptions& options) {
@@ -34,6 +52,14 @@ int viewCommand(const ViewOptions& options) {
   if (options.frames < 0) {
     std::cerr << "heartsim: error: --frames: must be >= 0 (0 = until the window is closed)\n";
     return kExitBadInput;
+  }
+  if (options.resolution != "auto") {
+    viewer.resolution = viewer::parseResolution(options.resolution);
+    if (!viewer.resolution) {
+      std::cerr << "heartsim: error: --resolution: '" << options.resolution
+                << "' is not a blood resolution; expected coarse, medium, fine, finest or auto\n";
+      return kExitBadInput;
+    }
   }
   if (!options.resume.empty() && !options.lesson.empty()) {
     std::cerr << "heartsim: error: --resume: a lesson starts from its own scenario; give --resume or --lesson\n";
@@ -67,6 +93,7 @@ int viewCommand(const ViewOptions& options) {
   viewer.scenario = *scenario;
   const std::vector<std::string> builtins = io::builtinScenarioNames();
   if (std::find(builtins.begin(), builtins.end(), scenarioName) != builtins.end()) viewer.builtinName = scenarioName;
+  viewer.bloodFixedBy = bloodFixedBy(options, viewer.builtinName.empty() ? scenarioName : "");
   viewer.frames = options.frames;
   viewer.screenshot = options.screenshot;
   // The simulation runs in its own thread beside the drawing: by default it leaves one core to

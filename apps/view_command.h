@@ -16,6 +16,7 @@ struct ViewOptions {
   int threads = 0;                     // 0 = all cores but one (left to the drawing)
   std::string lesson;                  // --lesson NAME|FILE: run a lesson (docs/lessons.md)
   std::string resume;                  // --resume FILE: start from a checkpoint (its scenario)
+  std::string resolution = "auto";     // --resolution coarse|medium|fine|finest|auto (blood)
 };
 
 // With a lesson, the viewer starts on the lesson's scenario; with --frames it plays the lesson

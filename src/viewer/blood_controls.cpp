@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <array>
+#include <cstdio>
 #include <cstddef>
 #include <span>
 
@@ -67,13 +68,39 @@ BloodControls bloodControlsFrom(const cardiac::Scenario& scenario, int particleC
 
 void applyBloodControls(const BloodControls& c, cardiac::Scenario& scenario) {
   scenario.blood.viscosity = cardiac::Real(c.viscosity);
+  applyResolution(c.resolution, scenario);
   if (c.particlesEdited) scenario.blood.particles = c.particles;
   scenario.blood.start = c.start;
   scenario.circulation.twoWay = c.twoWay;
   scenario.circulation.valveMode = c.valveMode;
 }
 
-void drawBloodSection(BloodControls& c, bool hasHeart, bool wallDriven) {
+// The resolution list: each level with the count and spacing it gives.
+void resolutionCombo(BloodControls& c, const ResolutionStatus& running, double spacing) {
+  char item[96];
+  const auto describe = [&](BloodResolution level) {
+    std::snprintf(item, sizeof item, "%s: %s particles, %.2g mm apart", resolutionName(level),
+                  withThousands(particlesAtLevel(level, running.level, running.particles)).c_str(),
+                  1000 * spacing * resolutionSpacingScale(level) / resolutionSpacingScale(running.level));
+    return item;
+  };
+  if (ImGui::BeginCombo("resolution", resolutionName(c.resolution))) {
+    for (const ResolutionLevel& l : kResolutionLevels)
+      if (ImGui::Selectable(describe(l.level), l.level == c.resolution) && l.level != c.resolution) {
+        c.resolution = l.level;
+        c.particlesEdited = false;  // the level's own count
+        c.changed = true;
+      }
+    ImGui::EndCombo();
+  }
+  tooltip(
+      "How finely the blood is divided into particles. Finer: smaller particles, more of them, closer "
+      "flow detail, a slower simulation. 'fine' is the scenario as written; each level halves or "
+      "doubles the count, the particles' size following so the heart stays full.\nAt start-up the viewer "
+      "picks the finest level that holds real time on this computer. Restarts from t = 0.");
+}
+
+void drawBloodSection(BloodControls& c, const ResolutionStatus& resolution, bool hasHeart, bool wallDriven) {
   if (wallDriven) {
     ImGui::TextDisabled("cannot change EF or the pressures (?)");
     tooltip(
@@ -81,6 +108,7 @@ void drawBloodSection(BloodControls& c, bool hasHeart, bool wallDriven) {
         "the blood. These settings change how the blood moves and looks (its speed, the jets), not the "
         "ejection fraction, the volumes or the pressures.");
   }
+  resolutionCombo(c, resolution, resolution.spacing);
   const double minViscosity = 0.0005, maxViscosity = 0.5;
   ImGui::SliderScalar("viscosity", ImGuiDataType_Double, &c.viscosity, &minViscosity, &maxViscosity,
                       "%.4f Pa s", ImGuiSliderFlags_Logarithmic);

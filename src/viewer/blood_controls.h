@@ -5,11 +5,13 @@
 // scenario's settings changed, through the same path as Reset. Needs an ImGui frame for
 // drawBloodSection; the rest is plain data, unit-tested.
 #include "cardiac/scenario.h"
+#include "viewer/blood_resolution.h"
 
 namespace hs::viewer {
 
 struct BloodControls {
   double viscosity = 0.04;  // Pa s
+  BloodResolution resolution = kScenarioResolution;  // spacing and count (blood_resolution.h)
   int particles = 1000;
   bool particlesEdited = false;  // the scenario may say 0 (fill the start region): keep it until edited
   cardiac::BloodSettings::Start start = cardiac::BloodSettings::Start::Block;
@@ -21,12 +23,14 @@ struct BloodControls {
 // The controls as a scenario sets them; `particleCount` is the count the simulation made
 // (what blood.particles = 0 came to).
 BloodControls bloodControlsFrom(const cardiac::Scenario& scenario, int particleCount);
-// Writes the controls into the scenario's settings.
+// Writes the controls into the scenario's settings: the resolution's spacing and count, then an
+// edited count.
 void applyBloodControls(const BloodControls& controls, cardiac::Scenario& scenario);
 
+// resolution: the run's level and count, for the resolution list's counts.
 // hasHeart: the start, coupling and valve controls need the heart; wallDriven: the lumped
 // circulation moves the wall, so the blood's settings cannot change EF or the pressures (the
 // section says so).
-void drawBloodSection(BloodControls& controls, bool hasHeart, bool wallDriven);
+void drawBloodSection(BloodControls& controls, const ResolutionStatus& resolution, bool hasHeart, bool wallDriven);
 
 }  // namespace hs::viewer

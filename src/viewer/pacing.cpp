@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+
+#include "viewer/blood_resolution.h"
 
 namespace hs::viewer {
 
@@ -48,6 +51,19 @@ FrameTimeSummary summariseFrameTimes(const std::vector<double>& seconds, std::si
   std::nth_element(kept.begin(), kept.begin() + std::ptrdiff_t(rank - 1), kept.end());
   summary.p95Ms = 1000 * kept[rank - 1];
   return summary;
+}
+
+std::string scriptedRunLine(const FrameTimeSummary& f, const std::optional<SimulationPace>& simulation) {
+  char text[256];
+  std::snprintf(text, sizeof text, "heartsim: %d frames: %.1f ms mean, %.1f fps, 95%% within %.1f ms", f.frames,
+                f.meanMs, f.fps, f.p95Ms);
+  std::string line = text;
+  if (!simulation || simulation->wallSeconds <= 0) return line + "; simulation not started";
+  const SimulationPace& p = *simulation;
+  std::snprintf(text, sizeof text, "; simulation %.2fx real time (stepping %.0f%% of the time), ",
+                p.simulatedSeconds / p.wallSeconds, 100 * std::min(p.steppingSeconds / p.wallSeconds, 1.0));
+  line += text;
+  return line + (p.particles > 0 ? withThousands(p.particles) + " particles" : std::string("no blood"));
 }
 
 }  // namespace hs::viewer

@@ -3,6 +3,8 @@
 // speed. Pure arithmetic on the times it is given, so it is unit-tested without a clock. Also
 // the frame-time summary of a scripted run.
 #include <cstddef>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace hs::viewer {
@@ -68,5 +70,19 @@ struct FrameTimeSummary {
 // Frame times in seconds, in order; the first `skip` (start-up: the first frames compile
 // shaders and fill caches) are left out when there are more than that.
 FrameTimeSummary summariseFrameTimes(const std::vector<double>& seconds, std::size_t skip);
+
+// The simulation over a scripted run, from when it was let go after start-up (the blood's
+// levels measured) to the last frame.
+struct SimulationPace {
+  double simulatedSeconds = 0;  // simulated time stepped
+  double wallSeconds = 0;       // wall time it took
+  double steppingSeconds = 0;   // of which the simulation thread spent stepping
+  int particles = 0;            // blood particles (0: none)
+};
+
+// The run's last line: "heartsim: 590 frames: 26.0 ms mean, 38.5 fps, 95% within 33.7 ms;
+// simulation 1.02x real time (stepping 64% of the time), 2,100 particles". Without a pace (the
+// run ended during start-up): "simulation not started".
+std::string scriptedRunLine(const FrameTimeSummary& frames, const std::optional<SimulationPace>& simulation);
 
 }  // namespace hs::viewer

@@ -46,7 +46,9 @@ void setControls(const cardiac::Scenario& scenario, ViewerControls& controls) {
   controls.contraction = float(scenario.cycle.contraction);
   controls.beatingDuration = scenario.cycle.beatingDuration;
   controls.beatingDisplace = float(scenario.cycle.beatingDisplace);
+  const BloodResolution resolution = controls.blood.resolution;  // the machine's, kept from scenario to scenario
   controls.blood = bloodControlsFrom(scenario, 0);
+  controls.blood.resolution = resolution;
   controls.circulation = circulationControlsFrom(scenario);
 }
 
@@ -80,6 +82,8 @@ void readStatus(const SimulationState& state, ViewerStatus& status) {
   status.heartSize = float(scenario.geometry.endoRadius);
   status.phase = sim.hasHeart() && scenario.cycle.enabled ? cardiac::phaseName(step.phase) : "";
   status.cavity = sim.hasHeart() ? step.cavity : -1;
+  status.resolution.particles = sim.hasBlood() ? int(sim.particles().size() - sim.firstBloodParticle()) : 0;
+  status.resolution.spacing = double(scenario.blood.spacing);
   status.speedMax = render::defaultSpeedScale(scenario);
   status.pressureMax = render::defaultPressureScale(scenario);
   PumpStatus& pump = status.pump;
@@ -199,9 +203,12 @@ void SimulationRunner::run() {
     const bool dropped = m_pacer.elapse(wallSeconds, s.speed, dt);
     double simulated = 0;
     if (m_pacer.due(dt)) {
+      const auto before = Clock::now();
       stepOnce();
       m_pacer.stepped(dt);
       simulated = dt;
+      s.simulatedSeconds += dt;
+      s.steppingSeconds += std::chrono::duration<double>(Clock::now() - before).count();
     }
     m_meter.add(wallSeconds, simulated, dropped);
     s.paceFactor = m_meter.factor();

@@ -43,6 +43,10 @@ struct SimulationState {
   bool behind = false;    // cannot keep up with `speed`
   std::string message;    // "simulation became invalid ...", taken by the main thread
   std::uint64_t restarts = 0;
+  // Written by the worker, summed over every run: the simulated time stepped while playing and
+  // the wall time its steps took (a scripted run's last line: the pace and the worker's share).
+  double simulatedSeconds = 0;
+  double steppingSeconds = 0;
 };
 
 // The built-in presets with their descriptions (each a scenario file compiled in).

@@ -87,6 +87,13 @@ void simulationSection(ViewerControls& c, const ViewerStatus& s) {
             "speed asked: the heart is shown in slow motion, every step of it computed. Fewer blood "
             "particles (Blood section) run faster.");
   }
+  if (s.hasBlood) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", resolutionLine(s.resolution, s.realTimeFactor, s.behind).c_str());
+    ImGui::PopStyleColor();
+    tooltip("The blood's resolution (Blood section): at start-up the viewer measures each level on this "
+            "computer and picks the finest that keeps up with real time; a finer one runs in slow motion.");
+  }
 }
 
 // A folding section of the panel; opening one closes the one open before.
@@ -226,7 +233,7 @@ void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
   if (controls.circulation.lumped && section("Circulation", PanelSection::Circulation, open))
     drawCirculationSection(controls.circulation, controls.heartRateBpm, controls.cycleChanged,
                            controls.showCirculation);
-  if (status.hasBlood && section("Blood", PanelSection::Blood, open)) drawBloodSection(controls.blood, status.hasHeart, controls.circulation.lumped);
+  if (status.hasBlood && section("Blood", PanelSection::Blood, open)) drawBloodSection(controls.blood, status.resolution, status.hasHeart, controls.circulation.lumped);
   if (status.hasHeart && section("Beating region", PanelSection::Region, open))
     drawRegionSection(controls.region, status.region);
   if (section("Display", PanelSection::Display, open)) displaySection(controls, status);

@@ -72,6 +72,7 @@ struct ViewerStatus {
   int bloodColour = 0;              // what the blood's colour shows (render::BloodColour)
   float clipMin = -1, clipMax = 1;  // range of the clipping plane's slider (m)
   std::string message;              // an event to show as a toast: "saved /home/a/heartsim_normal_001.png"
+  ResolutionStatus resolution;  // the blood's resolution and its pace (blood_resolution.h)
   RegionStatus region;
   PumpStatus pump;  // the right panel (with a heart)
   CirculationStatus circulation;  // the PV loop and Wiggers panel (lumped circulation)

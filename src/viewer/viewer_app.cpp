@@ -39,7 +39,10 @@ ViewerApp::ViewerApp(const ViewerOptions& options)
   m_renderer = std::make_unique<render::Renderer>();
   m_controls.scenarioIndex = scenarioIndex(options.builtinName);
   if (options.lesson) m_lesson = std::make_unique<LessonPlayer>(*options.lesson, options.frames > 0);
+  m_controls.blood.resolution = options.resolution.value_or(kScenarioResolution);
+  m_status.resolution.fixedBy = options.bloodFixedBy;
   startScenario(m_baseScenario);
+  startResolutionProbe();
 }
 
 void ViewerApp::run() {
@@ -53,10 +56,11 @@ void ViewerApp::run() {
       std::fprintf(stderr, "heartsim: the lesson stopped at step %d of %d when the %d frames ran out\n",
                    m_lesson->stepIndex() + 1, m_lesson->stepCount(), m_options.frames);
     const auto start = Clock::now();
+    followProbe();
     drawFrame(last && !m_options.screenshot.empty() ? m_options.screenshot : std::string());
     if (m_options.frames > 0) frameSeconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
     if (last) {
-      reportFrameTimes(frameSeconds);
+      reportScriptedRun(frameSeconds);
       return;
     }
   }
@@ -91,8 +95,6 @@ void ViewerApp::startScenario(const cardiac::Scenario& scenario) {
     m_status.hasHeart = sim.hasHeart();
     m_status.circulation.lumped = sim.lumped() != nullptr;
     m_status.pump.scale = volumeScaleFor(s.monitor->last().cavity);
-    const int blood = sim.hasBlood() ? int(sim.particles().size() - sim.firstBloodParticle()) : 0;
-    m_controls.blood = bloodControlsFrom(scenario, blood);
   });
   m_controls.clip = m_status.hasHeart;
   m_status.clipMin = bounds.min.z();
@@ -118,6 +120,12 @@ bool ViewerApp::restart(const std::string& change) {
     return false;
   }
   m_started = true;
+  m_runner.access([&](SimulationState& s) {  // the count the run made (blood.particles = 0 fills)
+    const cardiac::HeartSimulation& sim = *s.sim;
+    if (sim.hasBlood()) m_controls.blood.particles = int(sim.particles().size() - sim.firstBloodParticle());
+  });
+  m_status.resolution.level = m_controls.blood.resolution;
+  m_status.resolution.measuredPace = m_measuredPace[std::size_t(m_controls.blood.resolution)];
   m_runningBlood = m_controls.blood;
   m_runningCirculation = m_controls.circulation;
   m_status.message.clear();

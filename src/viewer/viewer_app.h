@@ -10,6 +10,7 @@
 
 #include "cardiac/scenario.h"
 #include "io/checkpoint.h"
+#include "viewer/blood_resolution.h"
 #include "viewer/lesson.h"
 
 namespace hs::viewer {
@@ -26,6 +27,11 @@ struct ViewerOptions {
   int frames = 0;                  // > 0: quit after this many frames (scripted use, tests)
   std::string screenshot;          // non-empty: save the last frame there as PNG
   int threads = 1;                 // simulation worker threads
+  // --resolution: the blood's level; nullopt: the finest that holds real time here, measured at
+  // start-up (blood_resolution.h), unless bloodFixedBy names what fixed the blood's count (a
+  // scenario file, --set blood.particles, a lesson, a checkpoint): then it runs as given.
+  std::optional<BloodResolution> resolution;
+  std::string bloodFixedBy;
   std::optional<Lesson> lesson;    // a lesson to run (lesson.h); scripted when frames > 0
   // --resume FILE: the checkpoint to start from (its scenario is `scenario`) and the file's name.
   std::optional<io::Checkpoint> resume;

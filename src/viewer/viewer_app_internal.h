@@ -3,8 +3,10 @@
 // files: viewer_app.cpp (start-up, restarts, the panel's requests, mouse and keys) and
 // viewer_frame.cpp (one frame: the exchange with the simulation thread, the panels, the
 // scene, the overlays and the pictures). Internal to src/viewer.
+#include <array>
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,7 @@
 #include "viewer/plot_axes.h"
 #include "viewer/plot_history.h"
 #include "viewer/region_editor.h"
+#include "viewer/resolution_probe.h"
 #include "viewer/run_comparison.h"
 #include "viewer/scene_framing.h"
 #include "viewer/scene_labels.h"
@@ -81,6 +84,13 @@ class ViewerApp {
   std::vector<SceneLabel> m_labels;  // the anatomy's names, where they are this frame
   std::unique_ptr<LessonPlayer> m_lesson;  // with --lesson
   LessonRequests m_lessonRequests;         // from the lesson window, for the next frame
+  // The start-up measurement of the blood's levels (the simulation is held while it runs) and
+  // the paces it measured.
+  std::unique_ptr<ResolutionProbe> m_probe;
+  std::array<std::optional<double>, kResolutionCount> m_measuredPace;
+  // Where the simulation stood when it was let go after start-up: a scripted run's pace.
+  std::optional<Clock::time_point> m_paceStart;
+  double m_simulatedAtStart = 0, m_steppingAtStart = 0;
   SimulationRunner m_runner;  // last, so destroyed first: its thread stops before the app goes
 
   // The position of a built-in scenario in the preset list; -1 for any other name.
@@ -116,6 +126,11 @@ class ViewerApp {
 
   void handleInput();
 
+  // Measures the blood's levels (auto resolution with blood and no count fixed); followProbe,
+  // each frame, shows its progress and starts the level it picks when it is done.
+  void startResolutionProbe();
+  void followProbe();
+
   void applyRequests();
   void saveState();
 
@@ -137,8 +152,9 @@ class ViewerApp {
   std::string nextScreenshotName();
 
   // A scripted run's frame rate, for benchmarks (docs/performance.md): the first 10 frames
-  // (shader compilation, the first steps) are left out.
-  static void reportFrameTimes(const std::vector<double>& seconds);
+  // (shader compilation, the first steps) are left out; and the simulation's pace since it
+  // was let go after start-up, with its particle count.
+  void reportScriptedRun(const std::vector<double>& seconds);
 
   void drawFrame(const std::string& captureTo);
 };

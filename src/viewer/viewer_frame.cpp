@@ -24,10 +24,16 @@ render::Scene ViewerApp::exchange(double frameSeconds, const render::SceneOption
     ViewerControls& c = m_controls;
     // Play / pause from the panel goes to the thread; a pause from the thread (after Step, or
     // an invalid simulation) comes back to the panel.
-    if (c.playing != m_sentPlaying) s.playing = c.playing;
-    if (c.stepRequested) s.stepRequested = true, s.playing = false;
+    // While the blood's levels are measured at start-up, the simulation waits (m_sentPlaying is
+    // false then, so the panel's Play reaches it afterwards).
+    const bool held = m_probe != nullptr;
+    if (held)
+      s.playing = false;
+    else if (c.playing != m_sentPlaying)
+      s.playing = c.playing;
+    if (c.stepRequested && !held) s.stepRequested = true, s.playing = false;
     c.stepRequested = false;
-    c.playing = m_sentPlaying = s.playing;
+    if (!held) c.playing = m_sentPlaying = s.playing;
     s.speed = double(c.speed);
     const cardiac::HeartSimulation& sim = *s.sim;
     for (const BrushDab& dab : m_dabs) m_region.paint(sim, dab.query, dab.erase, c.region);
@@ -94,12 +100,6 @@ std::string ViewerApp::nextScreenshotName() {
     name = text;
   } while (std::filesystem::exists(name));
   return name;
-}
-
-void ViewerApp::reportFrameTimes(const std::vector<double>& seconds) {
-  const FrameTimeSummary s = summariseFrameTimes(seconds, 10);
-  std::fprintf(stderr, "heartsim: %d frames: %.1f ms mean, %.1f fps, 95%% within %.1f ms\n", s.frames, s.meanMs,
-               s.fps, s.p95Ms);
 }
 
 void ViewerApp::drawFrame(const std::string& captureTo) {

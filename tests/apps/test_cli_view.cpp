@@ -122,6 +122,29 @@ TEST_F(ViewUnderXvfb, BadSizeAndUnknownScenarioAreRejectedWithOneLine) {
   }
 }
 
+// --resolution takes a level or auto; anything else is one line and exit 2, before a window.
+TEST(ViewWithoutDisplay, BadResolutionIsExitTwoWithOneLine) {
+  const fs::path dir = scratchDir("view_bad_resolution");
+  ScopedDisplay none(std::nullopt);
+  for (const std::string bad : {"ultra", "Fine", "0"}) {
+    const CliResult r = runHeartsim("view normal --frames 1 --resolution " + bad, dir);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("--resolution: '" + bad + "'"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("coarse, medium, fine, finest or auto"), std::string::npos) << r.err;
+  }
+}
+
+// A level given runs at once (no start-up measurement): the last line counts its particles.
+TEST_F(ViewUnderXvfb, ResolutionCoarseRunsNormalWithAQuarterOfItsParticles) {
+  const fs::path dir = scratchDir("view_coarse");
+  const CliResult r = view("normal --frames 20 --size 640x480 --resolution coarse", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("real time (stepping"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(", 1,050 particles\n"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("blood resolution:"), std::string::npos) << r.err;  // nothing measured
+}
+
 TEST(ViewWithoutDisplay, ExitsOneSayingADisplayIsNeededAndRenderWorksWithout) {
   const fs::path dir = scratchDir("view_no_display");
   ScopedDisplay none(std::nullopt);

@@ -54,6 +54,10 @@ ViewerStatus richStatus() {
   status.circulation.lumped = true;
   status.behind = true;  // the speed line shows
   status.realTimeFactor = 0.21;
+  // The blood's resolution line at its longest: wrapped over two lines.
+  status.resolution.level = kScenarioResolution;
+  status.resolution.particles = 16800;
+  status.resolution.fixedBy = "as my-own-heart-scenario.toml sets it";
   status.heartSize = 0.032f;
   status.region.outOfStep[7] = true;  // the out-of-step line shows
   status.region.pending = true;       // "not applied yet" shows
