@@ -42,6 +42,13 @@ HS_KERNEL Real apply(const DistanceConstraint& c, Vec3* p, const Real* w, const 
   return r.deltaLambda;
 }
 
+template <class Constraint>
+HS_KERNEL bool immovable(const Constraint& c, const Real* w) {
+  for (const Index i : c.particles)
+    if (w[i] != Real(0)) return false;
+  return true;
+}
+
 // Projects a block's constraints of one group, in order (Gauss-Seidel). Blocks of one colour
 // touch disjoint particles, so blocks may run on any thread without changing the result.
 template <class Constraint>
@@ -55,6 +62,8 @@ void projectBlock(ConstraintGroup<Constraint>& group, std::size_t block, Particl
   const bool compliant = params.alphaTilde != Real(0);
   const std::size_t end = group.blockStart[block + 1];
   for (std::size_t c = group.blockStart[block]; c < end; ++c) {
+    // Every particle immovable (kinematic or pinned, w = 0): the projection would move nothing.
+    if (immovable(constraints[c], w)) continue;
     const Real deltaLambda = apply(constraints[c], p, w, params, compliant ? lambda[c] : Real(0));
     if (compliant) lambda[c] += deltaLambda;
   }

@@ -48,7 +48,7 @@ struct WallProximity {
   Vec3 normal = Vec3::Zero();
 };
 
-// The triangles binned for findNearestWalls: a uniform grid (cells of a third of `reach`) in
+// The triangles binned for findNearestWalls: a uniform grid (cells of edge `reach`) in
 // which each triangle is listed in every cell its box grown by `reach` touches, so that a point's
 // own cell lists every triangle within reach of it. Binned again by each update() (a moving wall),
 // into buffers kept from the last one.
