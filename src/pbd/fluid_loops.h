@@ -27,9 +27,12 @@ inline const Real* coordinates(const std::vector<Vec3>& v) { return reinterpret_
 struct ListView {
   const Index* offsets;
   const Index* indices;
+  Index count;  // particles (positions)
 };
 
-inline ListView viewOf(const NeighbourLists& lists) { return {lists.offsets.data(), lists.indices.data()}; }
+inline ListView viewOf(const NeighbourLists& lists) {
+  return {lists.offsets.data(), lists.indices.data(), Index(lists.offsets.size() - 1)};
+}
 
 // W_poly6(0), the self term of rho_i.
 inline Real poly6SelfTerm(const SphKernels& kernels) { return poly6(kernels, Real(0)); }

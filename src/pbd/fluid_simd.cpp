@@ -92,7 +92,7 @@ void CorrectionsRange(const CorrectionJob& job, std::size_t begin, std::size_t e
       }
     });
     const Vec3 sum(sx.sum(d), sy.sum(d), sz.sum(d));
-    const Vec3 push(px.sum(d), py.sum(d), pz.sum(d));
+    const Vec3 push = job.collide ? Vec3(px.sum(d), py.sum(d), pz.sum(d)) : Vec3::Zero();
     finishCorrection(job, i, li, sum, push);
   }
 }
@@ -111,7 +111,7 @@ void ViscosityRange(const ViscosityJob& job, std::size_t begin, std::size_t end)
     Accumulator<D> ax(d), ay(d), az(d), bx(d), by(d), bz(d);
     forNeighbourLanes(d, job.lists, i, [&](std::size_t part, const NeighbourLanes<D>& n) {
       const Pair<D> p = pairAt(d, job.coords, n, xi, yi, zi);
-      const Triple<D> vj = gather3(d, job.velocityCoords, n.index3);
+      const Triple<D> vj = loadPoints(d, job.velocityCoords, n);
       const V vx = hn::Sub(vxi, vj.x), vy = hn::Sub(vyi, vj.y), vz = hn::Sub(vzi, vj.z);
       // PBF eq. 17: xsph -= W_poly6(x_ij) v_ij.
       const V w = poly6(kc, n.valid, p.r2);
@@ -144,7 +144,7 @@ void VorticityRange(const VorticityJob& job, std::size_t begin, std::size_t end)
     Accumulator<D> ox(d), oy(d), oz(d);
     forNeighbourLanes(d, job.lists, i, [&](std::size_t part, const NeighbourLanes<D>& n) {
       const Pair<D> p = pairAt(d, job.coords, n, xi, yi, zi);
-      const Triple<D> vj = gather3(d, job.velocityCoords, n.index3);
+      const Triple<D> vj = loadPoints(d, job.velocityCoords, n);
       const V vx = hn::Sub(vxi, vj.x), vy = hn::Sub(vyi, vj.y), vz = hn::Sub(vzi, vj.z);
       const V g = spikyGradientFactor(kc, n.valid, p.r2);
       const V gx = hn::Mul(g, p.dx), gy = hn::Mul(g, p.dy), gz = hn::Mul(g, p.dz);
@@ -172,7 +172,7 @@ void ConfinementRange(const VorticityJob& job, std::size_t begin, std::size_t en
     Accumulator<D> ex(d), ey(d), ez(d);
     forNeighbourLanes(d, job.lists, i, [&](std::size_t part, const NeighbourLanes<D>& n) {
       const Pair<D> p = pairAt(d, job.coords, n, xi, yi, zi);
-      const Triple<D> oj = gather3(d, omega, n.index3);
+      const Triple<D> oj = loadPoints(d, omega, n);
       const V difference = hn::Sub(hn::Sqrt(squaredNorm(oj.x, oj.y, oj.z)), wiV);
       const V g = spikyGradientFactor(kc, n.valid, p.r2);
       ex.add(part, hn::IfThenElseZero(n.valid, hn::Mul(difference, hn::Mul(g, p.dx))));

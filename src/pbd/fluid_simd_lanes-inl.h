@@ -39,36 +39,42 @@ static_assert(kParts * kLanesPerVector == kFluidSimdLanes);
 
 // The lanes of one vector of a chunk: list entries [first, first + count), count <= lanes;
 // lanes beyond count read particle `pad` (the particle itself, a valid index) and are masked.
+// Built in place and passed by reference (`lane` may point into `padded`).
 template <class Desc>
 struct NeighbourLanes {
   Index first;
   std::size_t count;
+  const Index* lane;  // j of each lane
+  Index padded[kLanesPerVector];
   VI index;   // j
   VI index3;  // 3 j: the first coordinate of x_j in an AoS Vec3 array
   hn::Mask<Desc> valid;
+  bool quadLoads;  // every x_j may be read as 4 Reals (j + 1 < the number of points)
 };
 
 template <class Desc>
-HWY_INLINE NeighbourLanes<Desc> neighbourLanes(Desc d, const Index* indices, Index first, std::size_t count,
-                                               Index pad) {
+HWY_INLINE void fillNeighbourLanes(Desc d, NeighbourLanes<Desc>& n, const ListView& lists, Index first,
+                                   std::size_t count, Index pad) {
   const DI di;
-  VI j;
-  if constexpr (sizeof(SignedIndex) == sizeof(Index)) {
-    // Index and its signed twin may alias; a full vector is read in place.
-    if (count == kLanesPerVector) {
-      j = hn::LoadU(di, reinterpret_cast<const SignedIndex*>(indices + first));
-    } else {
-      alignas(64) SignedIndex buffer[kLanesPerVector];
-      for (std::size_t l = 0; l < kLanesPerVector; ++l)
-        buffer[l] = SignedIndex(l < count ? indices[first + l] : pad);
-      j = hn::Load(di, buffer);
-    }
+  n.first = first;
+  n.count = count;
+  if (count == kLanesPerVector) {
+    n.lane = lists.indices + first;
   } else {
-    alignas(64) SignedIndex buffer[kLanesPerVector];
-    for (std::size_t l = 0; l < kLanesPerVector; ++l) buffer[l] = SignedIndex(l < count ? indices[first + l] : pad);
-    j = hn::Load(di, buffer);
+    for (std::size_t l = 0; l < kLanesPerVector; ++l) n.padded[l] = l < count ? lists.indices[first + l] : pad;
+    n.lane = n.padded;
   }
-  return {first, count, j, hn::Add(hn::Add(j, j), j), hn::FirstN(d, count)};
+  if constexpr (sizeof(SignedIndex) == sizeof(Index)) {
+    // Index and its signed twin may alias.
+    n.index = hn::LoadU(di, reinterpret_cast<const SignedIndex*>(n.lane));
+  } else {
+    alignas(64) SignedIndex wide[kLanesPerVector];
+    for (std::size_t l = 0; l < kLanesPerVector; ++l) wide[l] = SignedIndex(n.lane[l]);
+    n.index = hn::Load(di, wide);
+  }
+  n.index3 = hn::Add(hn::Add(n.index, n.index), n.index);
+  n.valid = hn::FirstN(d, count);
+  n.quadLoads = hn::AllTrue(di, hn::Lt(n.index, hn::Set(di, SignedIndex(lists.count) - 1)));
 }
 
 // Calls lane(part, lanes) for every vector of i's neighbour list, part in [0, kParts) its place
@@ -76,12 +82,13 @@ HWY_INLINE NeighbourLanes<Desc> neighbourLanes(Desc d, const Index* indices, Ind
 template <class Desc, class Lane>
 HWY_INLINE void forNeighbourLanes(Desc d, const ListView& lists, Index i, const Lane& lane) {
   const Index begin = lists.offsets[i], end = lists.offsets[i + 1];
+  NeighbourLanes<Desc> n;
   for (Index chunk = begin; chunk < end; chunk += Index(kFluidSimdLanes)) {
     for (std::size_t part = 0; part < kParts; ++part) {
       const Index first = chunk + Index(part * kLanesPerVector);
       if (first >= end) break;  // no entries: the lane sums stay as they are (adding zero)
-      const std::size_t count = std::min<std::size_t>(kLanesPerVector, end - first);
-      lane(part, neighbourLanes(d, lists.indices, first, count, i));
+      fillNeighbourLanes(d, n, lists, first, std::min<std::size_t>(kLanesPerVector, end - first), i);
+      lane(part, n);
     }
   }
 }
@@ -95,11 +102,27 @@ struct Accumulator {
   }
   HWY_INLINE void add(std::size_t p, V v) { part[p] = hn::Add(part[p], v); }
   HWY_INLINE void subtract(std::size_t p, V v) { part[p] = hn::Sub(part[p], v); }
-  // ((l0 + l1) + (l2 + l3)) + ((l4 + l5) + (l6 + l7)).
+  // s_k = l_k + l_{k+4}, t_k = s_k + s_{k+2}, sum = t_0 + t_1: the order of a vector reduction
+  // (halves, then pairs), done in registers where the vectors are 8 or 4 floats.
   HWY_INLINE Real sum(Desc d) const {
+#if HWY_TARGET != HWY_SCALAR  // which has no shuffles
+    constexpr std::size_t lanes = hn::MaxLanes(Desc());  // dependent: discarded branches stay uncompiled
+    if constexpr (std::is_same_v<hn::TFromD<Desc>, float> && (lanes == 8 || lanes == 4)) {
+      using D4 = hn::Full128<hn::TFromD<Desc>>;
+      const hn::Vec<Desc>* const v = part;
+      hn::Vec<D4> s4;
+      if constexpr (lanes == 8) {
+        s4 = hn::Add(hn::LowerHalf(D4(), v[0]), hn::UpperHalf(D4(), v[0]));
+      } else {
+        s4 = hn::Add(v[0], v[1]);
+      }
+      const auto t = hn::Add(s4, hn::Shuffle1032(s4));  // s0 + s2, s1 + s3, ...
+      return hn::GetLane(hn::Add(t, hn::Shuffle2301(t)));
+    }
+#endif
     alignas(64) Real l[kFluidSimdLanes];
     for (std::size_t p = 0; p < kParts; ++p) hn::Store(part[p], d, l + p * kLanesPerVector);
-    return ((l[0] + l[1]) + (l[2] + l[3])) + ((l[4] + l[5]) + (l[6] + l[7]));
+    return ((l[0] + l[4]) + (l[2] + l[6])) + ((l[1] + l[5]) + (l[3] + l[7]));
   }
 };
 static_assert(kFluidSimdLanes == 8, "Accumulator::sum adds exactly 8 lanes");
@@ -109,11 +132,45 @@ struct Triple {
   V x, y, z;
 };
 
-// x_j, y_j, z_j of an AoS Vec3 array.
+// x_j, y_j, z_j of an AoS Vec3 array by gathers.
 template <class Desc>
 HWY_INLINE Triple<Desc> gather3(Desc d, const Real* coords, VI index3) {
   return {hn::GatherIndex(d, coords, index3), hn::GatherIndex(d, coords + 1, index3),
           hn::GatherIndex(d, coords + 2, index3)};
+}
+
+// The same by one 4-float load per lane (x, y, z and the next point's x) and a 4x4 transpose
+// per 128-bit block, which is faster than three gathers; where a lane is the last point (its
+// fourth float lies past the array) and for doubles, by gathers.
+template <class Desc>
+HWY_INLINE Triple<Desc> loadPoints(Desc d, const Real* coords, const NeighbourLanes<Desc>& n) {
+#if HWY_TARGET != HWY_SCALAR  // which has one lane
+  constexpr std::size_t lanes = hn::MaxLanes(Desc());  // dependent: discarded branches stay uncompiled
+  if constexpr (std::is_same_v<hn::TFromD<Desc>, float> && (lanes == 8 || lanes == 4)) {
+    if (n.quadLoads) {
+      const hn::Full128<hn::TFromD<Desc>> d4;
+      const auto at = [&](std::size_t l) { return hn::LoadU(d4, coords + 3 * std::size_t(n.lane[l])); };
+      V c0, c1, c2, c3;
+      if constexpr (lanes == 8) {
+        c0 = hn::Combine(d, at(4), at(0));
+        c1 = hn::Combine(d, at(5), at(1));
+        c2 = hn::Combine(d, at(6), at(2));
+        c3 = hn::Combine(d, at(7), at(3));
+      } else {
+        c0 = at(0), c1 = at(1), c2 = at(2), c3 = at(3);
+      }
+      const V t0 = hn::InterleaveLower(d, c0, c1);  // x0 x1 y0 y1 (per block)
+      const V t1 = hn::InterleaveLower(d, c2, c3);  // x2 x3 y2 y3
+      const V t2 = hn::InterleaveUpper(d, c0, c1);  // z0 z1 . .
+      const V t3 = hn::InterleaveUpper(d, c2, c3);  // z2 z3 . .
+      const hn::Repartition<std::uint64_t, Desc> d64;
+      return {hn::BitCast(d, hn::InterleaveLower(d64, hn::BitCast(d64, t0), hn::BitCast(d64, t1))),
+              hn::BitCast(d, hn::InterleaveUpper(d64, hn::BitCast(d64, t0), hn::BitCast(d64, t1))),
+              hn::BitCast(d, hn::InterleaveLower(d64, hn::BitCast(d64, t2), hn::BitCast(d64, t3)))};
+    }
+  }
+#endif
+  return gather3(d, coords, n.index3);
 }
 
 template <class Desc>
@@ -129,7 +186,7 @@ HWY_INLINE V squaredNorm(V x, V y, V z) { return dot(x, y, z, x, y, z); }
 
 template <class Desc>
 HWY_INLINE Pair<Desc> pairAt(Desc d, const Real* coords, const NeighbourLanes<Desc>& n, V xi, V yi, V zi) {
-  const Triple<Desc> xj = gather3(d, coords, n.index3);
+  const Triple<Desc> xj = loadPoints(d, coords, n);
   Pair<Desc> p{hn::Sub(xi, xj.x), hn::Sub(yi, xj.y), hn::Sub(zi, xj.z), hn::Zero(d)};
   p.r2 = squaredNorm(p.dx, p.dy, p.dz);
   return p;
