@@ -12,6 +12,16 @@
 
 #include "pbd/fluid_loops.h"
 
+#ifndef HS_PBD_FLUID_SIMD_QUAD_JOB
+#define HS_PBD_FLUID_SIMD_QUAD_JOB
+namespace hs::pbd::simd {
+// computeDensityCorrections' inputs plus (x, y, z, lambda) per particle.
+struct QuadCorrectionJob : CorrectionJob {
+  const Real* quads;
+};
+}  // namespace hs::pbd::simd
+#endif
+
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "pbd/fluid_simd.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -52,7 +62,8 @@ void LambdasRange(const LambdaJob& job, std::size_t begin, std::size_t end) {
 }
 
 // dp_i of computeDensityCorrections (PBF eq. 12, thesis eq. 4.6), for subset entries [begin, end).
-void CorrectionsRange(const CorrectionJob& job, std::size_t begin, std::size_t end) {
+// Neighbours come from job.quads = (x_j, y_j, z_j, lambda_j): one load per lane, no gather.
+void CorrectionsRange(const QuadCorrectionJob& job, std::size_t begin, std::size_t end) {
   const D d;
   const KernelConstants<D> kc(d, job.kernels);
   const V zero = hn::Zero(d), half = hn::Set(d, Real(0.5));
@@ -66,8 +77,9 @@ void CorrectionsRange(const CorrectionJob& job, std::size_t begin, std::size_t e
     const V liV = hn::Set(d, li);
     Accumulator<D> sx(d), sy(d), sz(d), px(d), py(d), pz(d);
     forNeighbourLanes(d, job.lists, i, [&](std::size_t part, const NeighbourLanes<D>& n) {
-      const Pair<D> p = pairAt(d, job.coords, n, xi, yi, zi);
-      V weight = hn::Add(liV, hn::GatherIndex(d, job.lambdas, n.index));
+      V lj;
+      const Pair<D> p = pairAtQuads(d, job.quads, n, xi, yi, zi, lj);
+      V weight = hn::Add(liV, lj);
       if (job.tensile) {
         // s_corr = -k (W_poly6(r)/W_poly6(deltaQ))^n (PBF eq. 13).
         const V ratio = hn::Mul(poly6(kc, n.valid, p.r2), invWq);
@@ -202,20 +214,26 @@ namespace {
 
 // Runs range(begin, end) over contiguous blocks of [0, count), one per thread (a static
 // schedule). Each particle's result depends only on its own neighbour loop, so the blocks
-// change nothing but who computes what. The dispatch is resolved before the threads start.
-template <class Job>
-void runRanges(void (*range)(const Job&, std::size_t, std::size_t), const Job& job, std::size_t count,
-               int threads) {
+// change nothing but who computes what.
+template <class Range>
+void forRanges(std::size_t count, int threads, const Range& range) {
   if (count < std::size_t(kFluidParallelThreshold) || threads <= 1) {
-    range(job, 0, count);
+    range(std::size_t(0), count);
     return;
   }
 #pragma omp parallel num_threads(threads)
   {
     const auto t = std::size_t(omp_get_thread_num());
     const auto teams = std::size_t(omp_get_num_threads());
-    range(job, count * t / teams, count * (t + 1) / teams);
+    range(count * t / teams, count * (t + 1) / teams);
   }
+}
+
+// The same for an exported range function; the dispatch is resolved before the threads start.
+template <class Job>
+void runRanges(void (*range)(const Job&, std::size_t, std::size_t), const Job& job, std::size_t count,
+               int threads) {
+  forRanges(count, threads, [&](std::size_t begin, std::size_t end) { range(job, begin, end); });
 }
 
 // The function of the chosen target (choosing it on the first call).
@@ -240,8 +258,21 @@ void computeDensityCorrections(const std::vector<Vec3>& positions, const Neighbo
                                const FluidSettings& settings, const std::vector<Real>& lambdas,
                                std::vector<Vec3>& corrections, int threads,
                                const std::vector<Real>* pairGradients, const WallDensityInput* walls) {
-  const CorrectionJob job = makeCorrectionJob(positions, lists, subset, kernels, settings, lambdas, corrections,
-                                              pairGradients, walls);
+  QuadCorrectionJob job{makeCorrectionJob(positions, lists, subset, kernels, settings, lambdas, corrections,
+                                          pairGradients, walls),
+                        nullptr};
+  // (x, y, z, lambda) of every particle, 16 bytes, so that a neighbour is one 128-bit load.
+  std::vector<Real> quads(4 * positions.size());
+  const auto pack = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t j = begin; j < end; ++j) {
+      quads[4 * j] = positions[j].x();
+      quads[4 * j + 1] = positions[j].y();
+      quads[4 * j + 2] = positions[j].z();
+      quads[4 * j + 3] = lambdas[j];
+    }
+  };
+  forRanges(positions.size(), threads, pack);
+  job.quads = quads.data();
   runRanges(HS_DISPATCHED(CorrectionsRange), job, subset.size(), threads);
 }
 

@@ -139,38 +139,68 @@ HWY_INLINE Triple<Desc> gather3(Desc d, const Real* coords, VI index3) {
           hn::GatherIndex(d, coords + 2, index3)};
 }
 
-// The same by one 4-float load per lane (x, y, z and the next point's x) and a 4x4 transpose
-// per 128-bit block, which is faster than three gathers; where a lane is the last point (its
-// fourth float lies past the array) and for doubles, by gathers.
+template <class Desc>
+struct Quad {
+  V x, y, z, w;
+};
+
+#if HWY_TARGET != HWY_SCALAR  // which has no shuffles
+// The four Reals at stride * j_l (l the lane) as four vectors: one 4-float load per lane and a
+// 4x4 transpose per 128-bit block, faster than gathers. Only for 4 or 8 float lanes.
+template <std::size_t kStride, class Desc>
+HWY_INLINE Quad<Desc> loadTransposed(Desc d, const Real* base, const Index* lane) {
+  constexpr std::size_t lanes = hn::MaxLanes(Desc());
+  const hn::Full128<hn::TFromD<Desc>> d4;
+  const auto at = [&](std::size_t l) { return hn::LoadU(d4, base + kStride * std::size_t(lane[l])); };
+  hn::Vec<Desc> c0, c1, c2, c3;
+  if constexpr (lanes == 8) {
+    c0 = hn::Combine(d, at(4), at(0));
+    c1 = hn::Combine(d, at(5), at(1));
+    c2 = hn::Combine(d, at(6), at(2));
+    c3 = hn::Combine(d, at(7), at(3));
+  } else {
+    c0 = at(0), c1 = at(1), c2 = at(2), c3 = at(3);
+  }
+  const V t0 = hn::InterleaveLower(d, c0, c1);  // x0 x1 y0 y1 (per block)
+  const V t1 = hn::InterleaveLower(d, c2, c3);  // x2 x3 y2 y3
+  const V t2 = hn::InterleaveUpper(d, c0, c1);  // z0 z1 w0 w1
+  const V t3 = hn::InterleaveUpper(d, c2, c3);  // z2 z3 w2 w3
+  const hn::Repartition<std::uint64_t, Desc> d64;
+  const auto lo = [&](V a, V b) { return hn::BitCast(d, hn::InterleaveLower(d64, hn::BitCast(d64, a), hn::BitCast(d64, b))); };
+  const auto hi = [&](V a, V b) { return hn::BitCast(d, hn::InterleaveUpper(d64, hn::BitCast(d64, a), hn::BitCast(d64, b))); };
+  return {lo(t0, t1), hi(t0, t1), lo(t2, t3), hi(t2, t3)};
+}
+#endif
+
+// Whether loadTransposed serves this target: 4 or 8 float lanes (not doubles, not HWY_SCALAR).
+template <class Desc>
+inline constexpr bool kTransposedLoads =
+    std::is_same_v<hn::TFromD<Desc>, float> && (hn::MaxLanes(Desc()) == 8 || hn::MaxLanes(Desc()) == 4);
+
+// x_j, y_j, z_j of an AoS Vec3 array: 4-float loads (x, y, z and the next point's x) where no
+// lane is the last point, whose fourth float would lie past the array; gathers otherwise.
 template <class Desc>
 HWY_INLINE Triple<Desc> loadPoints(Desc d, const Real* coords, const NeighbourLanes<Desc>& n) {
-#if HWY_TARGET != HWY_SCALAR  // which has one lane
-  constexpr std::size_t lanes = hn::MaxLanes(Desc());  // dependent: discarded branches stay uncompiled
-  if constexpr (std::is_same_v<hn::TFromD<Desc>, float> && (lanes == 8 || lanes == 4)) {
+#if HWY_TARGET != HWY_SCALAR
+  if constexpr (kTransposedLoads<Desc>) {
     if (n.quadLoads) {
-      const hn::Full128<hn::TFromD<Desc>> d4;
-      const auto at = [&](std::size_t l) { return hn::LoadU(d4, coords + 3 * std::size_t(n.lane[l])); };
-      V c0, c1, c2, c3;
-      if constexpr (lanes == 8) {
-        c0 = hn::Combine(d, at(4), at(0));
-        c1 = hn::Combine(d, at(5), at(1));
-        c2 = hn::Combine(d, at(6), at(2));
-        c3 = hn::Combine(d, at(7), at(3));
-      } else {
-        c0 = at(0), c1 = at(1), c2 = at(2), c3 = at(3);
-      }
-      const V t0 = hn::InterleaveLower(d, c0, c1);  // x0 x1 y0 y1 (per block)
-      const V t1 = hn::InterleaveLower(d, c2, c3);  // x2 x3 y2 y3
-      const V t2 = hn::InterleaveUpper(d, c0, c1);  // z0 z1 . .
-      const V t3 = hn::InterleaveUpper(d, c2, c3);  // z2 z3 . .
-      const hn::Repartition<std::uint64_t, Desc> d64;
-      return {hn::BitCast(d, hn::InterleaveLower(d64, hn::BitCast(d64, t0), hn::BitCast(d64, t1))),
-              hn::BitCast(d, hn::InterleaveUpper(d64, hn::BitCast(d64, t0), hn::BitCast(d64, t1))),
-              hn::BitCast(d, hn::InterleaveLower(d64, hn::BitCast(d64, t2), hn::BitCast(d64, t3)))};
+      const Quad<Desc> q = loadTransposed<3>(d, coords, n.lane);
+      return {q.x, q.y, q.z};
     }
   }
 #endif
   return gather3(d, coords, n.index3);
+}
+
+// x_j, y_j, z_j, w_j of an array of 4 Reals per point.
+template <class Desc>
+HWY_INLINE Quad<Desc> loadQuads(Desc d, const Real* quads, const NeighbourLanes<Desc>& n) {
+#if HWY_TARGET != HWY_SCALAR
+  if constexpr (kTransposedLoads<Desc>) return loadTransposed<4>(d, quads, n.lane);
+#endif
+  const VI index4 = hn::Add(n.index, n.index3);
+  return {hn::GatherIndex(d, quads, index4), hn::GatherIndex(d, quads + 1, index4),
+          hn::GatherIndex(d, quads + 2, index4), hn::GatherIndex(d, quads + 3, index4)};
 }
 
 template <class Desc>
@@ -188,6 +218,16 @@ template <class Desc>
 HWY_INLINE Pair<Desc> pairAt(Desc d, const Real* coords, const NeighbourLanes<Desc>& n, V xi, V yi, V zi) {
   const Triple<Desc> xj = loadPoints(d, coords, n);
   Pair<Desc> p{hn::Sub(xi, xj.x), hn::Sub(yi, xj.y), hn::Sub(zi, xj.z), hn::Zero(d)};
+  p.r2 = squaredNorm(p.dx, p.dy, p.dz);
+  return p;
+}
+
+// r_ij from an array of (x, y, z, w) per point; w_j comes back in `w`.
+template <class Desc>
+HWY_INLINE Pair<Desc> pairAtQuads(Desc d, const Real* quads, const NeighbourLanes<Desc>& n, V xi, V yi, V zi, V& w) {
+  const Quad<Desc> q = loadQuads(d, quads, n);
+  w = q.w;
+  Pair<Desc> p{hn::Sub(xi, q.x), hn::Sub(yi, q.y), hn::Sub(zi, q.z), hn::Zero(d)};
   p.r2 = squaredNorm(p.dx, p.dy, p.dz);
   return p;
 }
