@@ -4,11 +4,14 @@
 // Same arguments, equations and contracts as there; only builds with HS_HAVE_HIGHWAY have them.
 //
 // Layout: a particle's neighbours are taken eight at a time, one lane each (kFluidSimdLanes),
-// gathered from the AoS positions (and lambdas, velocities) by neighbour index. Each lane keeps
-// its own partial sums; after the list, the eight lanes are added in a fixed tree order. The
-// lane count is fixed rather than the machine's vector width (an SSE4 machine runs two 4-lane
-// vectors, AVX-512 a 256-bit one), and no operation is fused (the build has -ffp-contract=off,
-// and no MulAdd is used), so every instruction set gives bitwise the same result.
+// read by neighbour index with one 128-bit load per lane (x, y, z of the AoS Vec3 arrays, or
+// x, y, z, lambda of a packed copy for the corrections) and a 4x4 transpose; measured faster
+// than three gathers (bench_kernels; SoA copies would still need one gather per coordinate,
+// as neighbour indices are scattered). Each lane keeps its own partial sums; after the list,
+// the eight lanes are added in a fixed tree order (fluid_simd_lanes-inl.h). The lane count is
+// fixed rather than the machine's vector width (an SSE4 machine runs two 4-lane vectors,
+// AVX-512 a 256-bit one), and no operation is fused (the build has -ffp-contract=off, and no
+// MulAdd is used), so every instruction set gives bitwise the same result.
 #include <cstddef>
 #include <cstdint>
 #include <span>
