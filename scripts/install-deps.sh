@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake git pkg-config
-  libeigen3-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
+  libeigen3-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libhwy-dev
   libgtest-dev libbenchmark-dev
   libstb-dev
   libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgl1-mesa-dri libegl-mesa0

@@ -1,17 +1,29 @@
 // Position Based Fluids (Macklin & Mueller 2013), see fluid.h for the equations and the
-// determinism contract: every loop is a gather over the CSR neighbour lists.
+// determinism contract: every loop is a gather over the CSR neighbour lists. These are the
+// scalar reference kernels; FluidKernelPath::Simd hands the neighbour loops to fluid_simd.cpp,
+// and both share their set-up and per-particle work (fluid_loops.h).
 #include "pbd/fluid.h"
 
 #include <cassert>
 #include <cmath>
 
+#include "pbd/fluid_loops.h"
+#ifdef HS_HAVE_HIGHWAY
+#include "pbd/fluid_simd.h"
+#endif
+
 namespace hs::pbd {
 namespace {
 
-// Below this many particles a fork-join costs more than a neighbour loop saves. Measured with
-// `heartsim bench --case pbf-dam-break-1k --threads 2`: a threshold of 2048 (serial at 1,000
-// particles) gave 640 steps/s, 256 gave about 1,000.
-constexpr std::ptrdiff_t kParallelThreshold = 256;
+constexpr std::ptrdiff_t kParallelThreshold = kFluidParallelThreshold;
+
+bool useSimd([[maybe_unused]] const FluidSettings& settings) {
+#ifdef HS_HAVE_HIGHWAY
+  return settings.kernelPath == FluidKernelPath::Simd;
+#else
+  return false;
+#endif
+}
 
 // Outputs cover every particle index; entries outside the subset keep their values.
 template <class T>
@@ -27,19 +39,10 @@ void checkInputs([[maybe_unused]] const std::vector<Vec3>& positions,
   assert(kernels.h == settings.supportRadius);
 }
 
-// s_corr = -k (W_poly6(r)/W_poly6(deltaQ))^n (PBF eq. 13), with invWq = 1/W_poly6(deltaQ).
-Real tensileCorrection(const SphKernels& kernels, const FluidSettings& settings, Real invWq, Real r2) {
-  const Real ratio = poly6(kernels, r2) * invWq;
-  Real power = 1;
-  for (int e = 0; e < settings.tensileN; ++e) power *= ratio;
-  return -settings.tensileK * power;
-}
-
 // The walk of every loop below over the CSR neighbour list of i: pair(k, j, r, r2) for each
 // neighbour j, k its slot in the lists (for per-pair caches), r = x_i - x_j, r2 = |r|^2.
 template <class Pair>
-HS_KERNEL void forNeighbours(const std::vector<Vec3>& positions, const NeighbourLists& lists, Index i,
-                             const Pair& pair) {
+HS_KERNEL void forNeighbours(const Vec3* positions, const ListView& lists, Index i, const Pair& pair) {
   const Vec3& xi = positions[i];
   for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k) {
     const Index j = lists.indices[k];
@@ -48,27 +51,24 @@ HS_KERNEL void forNeighbours(const std::vector<Vec3>& positions, const Neighbour
   }
 }
 
-// sum_j W_poly6(|x_i - x_j|) over the list of i, self term W(0) first.
-Real poly6Sum(const std::vector<Vec3>& positions, const NeighbourLists& lists, const SphKernels& kernels, Index i,
-              Real selfTerm) {
-  Real sum = selfTerm;
-  forNeighbours(positions, lists, i, [&](Index, Index, const Vec3&, Real r2) { sum += poly6(kernels, r2); });
-  return sum;
-}
-
 // s with grad W_spiky(r_ij) = s r_ij, without branches (the kernels of sph_kernels.h branch
 // on r >= h and r = 0): s = -45/(pi h^4) (1 - r/h)^2 / r, with q = 1 - r/h clamped to 0
 // beyond h, and r clamped below at 1e-6 h so that s stays finite (r_ij = 0 then gives a zero
 // gradient, as spikyGradient does; pairs closer than 1e-6 h get a slightly smaller one).
-HS_KERNEL Real spikyGradientScale(const SphKernels& k, Real r) {
+// Exactly 0 for r^2 >= h^2: the clamp of q alone is not exact there, since r/h may round to
+// just under 1 (for about one h in five).
+HS_KERNEL Real spikyGradientScale(const SphKernels& k, Real r2) {
+  const Real r = std::sqrt(r2);
   const Real q = std::max(Real(0), Real(1) - r * k.invH);
-  return k.spikyGradCoeff * q * q / std::max(r, Real(1e-6) * k.h);
+  const Real s = k.spikyGradCoeff * q * q / std::max(r, Real(1e-6) * k.h);
+  return r2 < k.h2 ? s : Real(0);
 }
 
-// W_poly6 from r^2, clamped to 0 beyond h without a branch.
+// W_poly6 from r^2, clamped to 0 beyond h without a branch (exactly 0 for r^2 >= h^2, as above).
 HS_KERNEL Real poly6Clamped(const SphKernels& k, Real r2) {
   const Real t = std::max(Real(0), Real(1) - r2 * k.invH2);
-  return k.poly6Coeff * (t * t * t);
+  const Real w = k.poly6Coeff * (t * t * t);
+  return r2 < k.h2 ? w : Real(0);
 }
 
 }  // namespace
@@ -96,13 +96,16 @@ void computeDensities(const std::vector<Vec3>& positions, const NeighbourLists& 
   checkInputs(positions, lists, kernels, settings);
   fitOutput(densities, positions.size());
   const Real m = settings.particleMass;
-  const Real selfTerm = poly6(kernels, Real(0));
+  const Real selfTerm = poly6SelfTerm(kernels);
+  const ListView view = viewOf(lists);
   const std::ptrdiff_t count = std::ptrdiff_t(subset.size());
 #pragma omp parallel for schedule(static) num_threads(threads) if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
     // rho_i = m sum_j W(x_i - x_j) (PBF eq. 2), self term first.
-    densities[i] = m * poly6Sum(positions, lists, kernels, i, selfTerm);
+    Real sum = selfTerm;
+    forNeighbours(positions.data(), view, i, [&](Index, Index, const Vec3&, Real r2) { sum += poly6(kernels, r2); });
+    densities[i] = m * sum;
   }
 }
 
@@ -124,47 +127,31 @@ void computeLambdas(const std::vector<Vec3>& positions, const NeighbourLists& li
                     const FluidSettings& settings, std::vector<Real>& densities,
                     std::vector<Real>& lambdas, int threads, std::vector<Real>* pairGradients,
                     const WallDensityInput* walls) {
-  checkInputs(positions, lists, kernels, settings);
-  if (pairGradients) pairGradients->resize(lists.indices.size());
-  Real* const pairOut = pairGradients ? pairGradients->data() : nullptr;
-  fitOutput(densities, positions.size());
-  fitOutput(lambdas, positions.size());
-  const Real invRho0 = Real(1) / settings.restDensity;
-  const Real m = settings.particleMass;
-  const Real selfTerm = poly6(kernels, Real(0));
-  const bool unilateral = settings.unilateralDensity;
-  const Real gradScale = settings.particleMass * invRho0;  // m/rho0, see fluid.h
+#ifdef HS_HAVE_HIGHWAY
+  if (useSimd(settings))
+    return simd::computeLambdas(positions, lists, subset, kernels, settings, densities, lambdas, threads,
+                                pairGradients, walls);
+#endif
+  const LambdaJob job =
+      makeLambdaJob(positions, lists, subset, kernels, settings, densities, lambdas, pairGradients, walls);
   const std::ptrdiff_t count = std::ptrdiff_t(subset.size());
 #pragma omp parallel for schedule(static) num_threads(threads) if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
     // PBF eq. 8: grad_{p_i} C_i = (m/rho0) sum_j grad W_ij, grad_{p_j} C_i = -(m/rho0) grad W_ij.
     // One loop for rho_i (PBF eq. 2, self term first) and the gradient sums.
-    Real kernelSum = selfTerm;
+    Real kernelSum = job.selfTerm;
     Vec3 gradI = Vec3::Zero();
     Real sumSqJ = 0;
-    forNeighbours(positions, lists, i, [&](Index k, Index, const Vec3& r, Real r2) {
+    forNeighbours(job.positions, job.lists, i, [&](Index k, Index, const Vec3& r, Real r2) {
       kernelSum += poly6Clamped(kernels, r2);
-      const Real gs = spikyGradientScale(kernels, std::sqrt(r2));
-      if (pairOut) pairOut[k] = gs;
-      const Vec3 g = (gradScale * gs) * r;
+      const Real gs = spikyGradientScale(kernels, r2);
+      if (job.pairOut) job.pairOut[k] = gs;
+      const Vec3 g = (job.gradScale * gs) * r;
       gradI += g;
       sumSqJ += g.squaredNorm();
     });
-    Real rho = m * kernelSum;
-    if (walls) {
-      const Real d = wallDistance(*walls, i, positions[i]);
-      if (d >= Real(0)) {
-        const Vec3& n = (*walls->proximity)[i].normal;
-        rho += settings.restDensity * walls->table->density(d);
-        gradI -= walls->table->gradient(d) * n;
-      }
-    }
-    densities[i] = rho;
-    const Real c = rho * invRho0 - Real(1);  // PBF eq. 1
-    // PBF eq. 11: lambda_i = -C_i / (sum_k |grad_{p_k} C_i|^2 + eps).
-    const Real lambda = -c / (gradI.squaredNorm() + sumSqJ + settings.relaxation);
-    lambdas[i] = unilateral ? std::min(lambda, Real(0)) : lambda;
+    finishLambda(job, i, kernelSum, gradI, sumSqJ);
   }
 }
 
@@ -173,43 +160,40 @@ void computeDensityCorrections(const std::vector<Vec3>& positions, const Neighbo
                                const FluidSettings& settings, const std::vector<Real>& lambdas,
                                std::vector<Vec3>& corrections, int threads,
                                const std::vector<Real>* pairGradients, const WallDensityInput* walls) {
-  checkInputs(positions, lists, kernels, settings);
-  assert(!pairGradients || pairGradients->size() == lists.indices.size());
-  const Real* const pairIn = pairGradients ? pairGradients->data() : nullptr;
-  const bool collide = settings.collisionRadius > Real(0);
-  assert(lambdas.size() == positions.size());
-  fitOutput(corrections, positions.size());
-  const Real scale = settings.particleMass / settings.restDensity;  // m/rho0, see fluid.h
-  const bool tensile = settings.tensileCorrection;
-  const Real deltaQ = settings.tensileDeltaQRatio * kernels.h;
-  const Real wq = poly6(kernels, deltaQ * deltaQ);
-  const Real invWq = wq > Real(0) ? Real(1) / wq : Real(0);
-  const Real contact = 2 * settings.collisionRadius;  // r_i + r_j of thesis eq. 4.6
-  const Real contact2 = contact * contact;
+#ifdef HS_HAVE_HIGHWAY
+  if (useSimd(settings))
+    return simd::computeDensityCorrections(positions, lists, subset, kernels, settings, lambdas, corrections,
+                                           threads, pairGradients, walls);
+#endif
+  const CorrectionJob job =
+      makeCorrectionJob(positions, lists, subset, kernels, settings, lambdas, corrections, pairGradients, walls);
+  const Real contact2 = job.contact * job.contact;
   const std::ptrdiff_t count = std::ptrdiff_t(subset.size());
 #pragma omp parallel for schedule(static) num_threads(threads) if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
-    const Real li = lambdas[i];
+    const Real li = job.lambdas[i];
     // PBF eq. 12: dp_i = (m/rho0) sum_j (lambda_i + lambda_j + s_corr) grad W(p_i - p_j).
     Vec3 sum = Vec3::Zero();
     Vec3 push = Vec3::Zero();
-    forNeighbours(positions, lists, i, [&](Index k, Index j, const Vec3& r, Real r2) {
-      Real weight = li + lambdas[j];
-      if (tensile) weight += tensileCorrection(kernels, settings, invWq, r2);
-      const Real gs = pairIn ? pairIn[k] : spikyGradientScale(kernels, std::sqrt(r2));
+    forNeighbours(job.positions, job.lists, i, [&](Index k, Index j, const Vec3& r, Real r2) {
+      Real weight = li + job.lambdas[j];
+      if (job.tensile) {
+        // s_corr = -k (W_poly6(r)/W_poly6(deltaQ))^n (PBF eq. 13).
+        const Real ratio = poly6(kernels, r2) * job.invWq;
+        Real power = 1;
+        for (int e = 0; e < job.tensileN; ++e) power *= ratio;
+        weight += -job.tensileK * power;
+      }
+      const Real gs = job.pairIn ? job.pairIn[k] : spikyGradientScale(kernels, r2);
       sum += (weight * gs) * r;
       // Thesis eq. 4.6: C = |x_ij| - 2r >= 0; equal masses move half the overlap each.
-      if (collide && r2 < contact2 && r2 > Real(0)) {
+      if (job.collide && r2 < contact2 && r2 > Real(0)) {
         const Real d = std::sqrt(r2);
-        push += (Real(0.5) * (contact - d) / d) * r;
+        push += (Real(0.5) * (job.contact - d) / d) * r;
       }
     });
-    corrections[i] = scale * sum + push;
-    if (walls) {
-      const Real d = wallDistance(*walls, i, positions[i]);
-      if (d >= Real(0)) corrections[i] -= (2 * li * walls->table->gradient(d)) * (*walls->proximity)[i].normal;
-    }
+    finishCorrection(job, i, li, sum, push);
   }
 }
 
@@ -217,30 +201,26 @@ void applyViscosity(const std::vector<Vec3>& positions, const std::vector<Vec3>&
                     const NeighbourLists& lists, std::span<const Index> subset,
                     const SphKernels& kernels, const FluidSettings& settings, Real dt,
                     std::vector<Vec3>& newVelocities, int threads) {
-  checkInputs(positions, lists, kernels, settings);
-  assert(velocities.size() == positions.size());
-  assert(&velocities != &newVelocities);
-  fitOutput(newVelocities, positions.size());
-  const Real c = settings.xsphViscosity;
-  // dt 2(d+2) nu m/rho0 with d = 3 (Monaghan 2005 eq. 6.13), and the 0.01 h^2 that keeps the
-  // denominator away from zero for close pairs.
-  const Real laplace = dt * Real(10) * settings.kinematicViscosity * settings.particleMass / settings.restDensity;
-  const Real softening = Real(0.01) * kernels.h2;
+#ifdef HS_HAVE_HIGHWAY
+  if (useSimd(settings))
+    return simd::applyViscosity(positions, velocities, lists, subset, kernels, settings, dt, newVelocities, threads);
+#endif
+  const ViscosityJob job = makeViscosityJob(positions, velocities, lists, subset, kernels, settings, dt, newVelocities);
   const std::ptrdiff_t count = std::ptrdiff_t(subset.size());
 #pragma omp parallel for schedule(static) num_threads(threads) if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
-    const Vec3& vi = velocities[i];
+    const Vec3& vi = job.velocities[i];
     Vec3 xsph = Vec3::Zero();
     Vec3 viscous = Vec3::Zero();
-    forNeighbours(positions, lists, i, [&](Index, Index j, const Vec3& r, Real r2) {
-      const Vec3 vij = vi - velocities[j];
+    forNeighbours(job.positions, job.lists, i, [&](Index, Index j, const Vec3& r, Real r2) {
+      const Vec3 vij = vi - job.velocities[j];
       // PBF eq. 17: c sum_j (v_j - v_i) W_poly6(x_i - x_j).
       xsph -= poly6(kernels, r2) * vij;
       // Monaghan 2005 eq. 6.13: (v_ij . x_ij)/(|x_ij|^2 + 0.01 h^2) grad W(x_ij).
-      viscous += (vij.dot(r) / (r2 + softening)) * spikyGradient(kernels, r, std::sqrt(r2));
+      viscous += (vij.dot(r) / (r2 + job.softening)) * spikyGradient(kernels, r, std::sqrt(r2));
     });
-    newVelocities[i] = vi + c * xsph + laplace * viscous;
+    job.newVelocities[i] = vi + job.xsph * xsph + job.laplace * viscous;
   }
 }
 
@@ -249,11 +229,13 @@ void applyVorticityConfinement(const std::vector<Vec3>& positions, const std::ve
                                const SphKernels& kernels, const FluidSettings& settings, Real dt,
                                std::vector<Vec3>& vorticity, std::vector<Vec3>& newVelocities,
                                int threads) {
-  checkInputs(positions, lists, kernels, settings);
-  assert(&velocities != &newVelocities);
-  fitOutput(vorticity, positions.size());
-  fitOutput(newVelocities, positions.size());
-  const Real scale = settings.particleMass / settings.restDensity;
+#ifdef HS_HAVE_HIGHWAY
+  if (useSimd(settings))
+    return simd::applyVorticityConfinement(positions, velocities, lists, subset, kernels, settings, dt, vorticity,
+                                           newVelocities, threads);
+#endif
+  const VorticityJob job =
+      makeVorticityJob(positions, velocities, lists, subset, kernels, settings, dt, vorticity, newVelocities);
   const std::ptrdiff_t count = std::ptrdiff_t(subset.size());
   // PBF eq. 15: omega_i = sum_j (m/rho0) (v_i - v_j) x grad_i W(x_ij), the SPH curl of v
   // (= PBF's sum_j (v_j - v_i) x grad_j W; a rigid rotation Omega gives omega ~ 2 Omega).
@@ -262,28 +244,23 @@ void applyVorticityConfinement(const std::vector<Vec3>& positions, const std::ve
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
     Vec3 omega = Vec3::Zero();
-    forNeighbours(positions, lists, i, [&](Index, Index j, const Vec3& r, Real r2) {
-      omega += (velocities[i] - velocities[j]).cross(spikyGradient(kernels, r, std::sqrt(r2)));
+    forNeighbours(job.positions, job.lists, i, [&](Index, Index j, const Vec3& r, Real r2) {
+      omega += (job.velocities[i] - job.velocities[j]).cross(spikyGradient(kernels, r, std::sqrt(r2)));
     });
-    vorticity[i] = scale * omega;
+    job.vorticity[i] = job.scale * omega;
   }
   // PBF eq. 16: f = eps (N x omega), N = eta/|eta|, eta = grad |omega| (SPH difference form).
-  const Real eps = settings.vorticityConfinement;
 #pragma omp parallel for schedule(static) num_threads(threads) if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
-    const Real wi = vorticity[i].norm();
+    const Real wi = job.vorticity[i].norm();
     Vec3 eta = Vec3::Zero();
-    forNeighbours(positions, lists, i, [&](Index, Index j, const Vec3& r, Real r2) {
+    forNeighbours(job.positions, job.lists, i, [&](Index, Index j, const Vec3& r, Real r2) {
       // grad |omega| at i ~ sum_j (m/rho0)(|omega_j| - |omega_i|) grad_i W(x_ij); grad_i W
       // points from i towards j, so a larger |omega_j| turns eta towards j.
-      eta += (vorticity[j].norm() - wi) * spikyGradient(kernels, r, std::sqrt(r2));
+      eta += (job.vorticity[j].norm() - wi) * spikyGradient(kernels, r, std::sqrt(r2));
     });
-    eta *= scale;
-    const Real len = eta.norm();
-    Vec3 v = velocities[i];
-    if (len > Real(1e-12)) v += dt * eps * (eta / len).cross(vorticity[i]);
-    newVelocities[i] = v;
+    finishConfinement(job, i, eta);
   }
 }
 

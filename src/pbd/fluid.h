@@ -17,6 +17,9 @@
 // m/rho0; it equals the papers' 1/rho0 for m = 1. Without it the Newton step of eq. 9-11 would
 // be scaled by m (a 4.3x overshoot for blood at the thesis spacing of 0.16 m).
 //
+// Support: every kernel term is exactly zero for |p_i - p_j| >= h (r^2 >= h^2), so lists may
+// hold pairs beyond h (a skin kept over several steps): such pairs contribute nothing.
+//
 // Parallelism and determinism: every function is a gather. Each particle i of `subset` reads
 // its neighbours through the CSR lists (neighbours sorted by j, neighbour_grid.h) and writes
 // only its own output entry, so there are no atomics and no cross-thread reductions, and the
@@ -36,6 +39,15 @@
 #include "pbd/types.h"
 
 namespace hs::pbd {
+
+// Which implementation runs the neighbour loops of computeLambdas, computeDensityCorrections,
+// applyViscosity and applyVorticityConfinement. Simd (fluid_simd.cpp, Highway) evaluates the
+// same per-pair arithmetic, in the same operation order, eight neighbours at a time with a lane
+// per neighbour, and sums the eight lanes in a fixed order: its results equal the scalar
+// reference within float rounding (the sums over neighbours are re-associated), and are the
+// same on every instruction set and thread count. Builds without Highway (HS_SIMD=OFF) run
+// Scalar for both.
+enum class FluidKernelPath { Scalar, Simd };
 
 struct FluidSettings {
   Real restDensity = 1000;      // rho0, kg/m^3 (thesis Table: blood rest density 1000 kg/m^3)
@@ -79,6 +91,7 @@ struct FluidSettings {
   // of lambda grad C far longer than its neighbourhood, and would jump through a thin wall
   // in one iteration; PBF's linearisation is only valid for steps small against h.
   Real maxCorrection = 0;
+  FluidKernelPath kernelPath = FluidKernelPath::Simd;
 };
 
 // Mass of one particle of a cubic lattice at rest: m = rho0 d^3 (one particle per d^3 cell).
