@@ -14,27 +14,16 @@ constexpr std::ptrdiff_t kParallelThreshold = 2048;
 
 }  // namespace
 
-bool segmentTouchesBox(const Vec3& a, const Vec3& b, const Box3& box, Real pad) {
-  // Slab test: the segment a + s (b - a), s in [0, 1], is inside slab k for s between
-  // (lo_k - a_k) / d_k and (hi_k - a_k) / d_k; it meets the box when the three ranges and
-  // [0, 1] overlap. A component with d_k = 0 is inside its slab for all s or for none.
-  if (!a.allFinite() || !b.allFinite()) return false;
-  double enter = 0, leave = 1;
-  for (int k = 0; k < 3; ++k) {
-    const double lo = double(box.lo[k]) - double(pad), hi = double(box.hi[k]) + double(pad);
-    if (!(lo <= hi)) return false;  // empty (or NaN) box
-    const double from = double(a[k]), d = double(b[k]) - from;
-    if (d == 0) {
-      if (from < lo || from > hi) return false;
-      continue;
-    }
-    double s0 = (lo - from) / d, s1 = (hi - from) / d;
-    if (s0 > s1) std::swap(s0, s1);
-    enter = std::max(enter, s0);
-    leave = std::min(leave, s1);
-    if (enter > leave) return false;
+SegmentQuery::SegmentQuery(const Vec3& a, const Vec3& b, Real pad) : m_pad(double(pad)) {
+  m_finite = a.allFinite() && b.allFinite();
+  for (std::size_t k = 0; k < 3; ++k) {
+    m_a[k] = double(a[int(k)]);
+    const double end = double(b[int(k)]), d = end - m_a[k];
+    m_lo[k] = std::min(m_a[k], end);
+    m_hi[k] = std::max(m_a[k], end);
+    m_flat[k] = d == 0;
+    m_inverse[k] = m_flat[k] ? 0 : 1 / d;
   }
-  return true;
 }
 
 Box3 sweptTriangleBox(const std::vector<Vec3>& start, const std::vector<Vec3>& end, const Triangle& t, Real margin) {

@@ -24,6 +24,8 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <utility>
+#include <algorithm>
 #include <vector>
 
 #include "pbd/tet_mesh.h"
@@ -45,9 +47,44 @@ struct Box3 {
   }
 };
 
-// Whether the segment a -> b meets the box grown by pad on every side (boundary included):
-// the slab test (Kay & Kajiya 1986), in double. False for a non-finite segment or an empty box.
-bool segmentTouchesBox(const Vec3& a, const Vec3& b, const Box3& box, Real pad);
+// A segment a -> b grown by pad, prepared for many box tests: its own box (a cheap first
+// reject: most boxes a short step is tested against are nowhere near it) and, per axis, the
+// reciprocal of its extent for the slab test (Kay & Kajiya 1986). In double.
+class SegmentQuery {
+ public:
+  SegmentQuery(const Vec3& a, const Vec3& b, Real pad);
+  // Whether the segment meets the box grown by pad on every side (boundary included). False
+  // for a non-finite segment or an empty box. Monotone in the box: a box containing another
+  // is touched whenever the other is (IEEE operations round monotonically).
+  [[nodiscard]] bool touches(const Box3& box) const {
+    if (!m_finite) return false;
+    double enter = 0, leave = 1;
+    for (int k = 0; k < 3; ++k) {
+      const double lo = double(box.lo[k]) - m_pad, hi = double(box.hi[k]) + m_pad;
+      if (!(lo <= m_hi[k] && m_lo[k] <= hi)) return false;  // boxes apart (or the box empty)
+      if (m_flat[k]) continue;  // within the slab for all s: the box test above was exact
+      // The segment a + s (b - a) is inside slab k for s between (lo - a_k) / d_k and
+      // (hi - a_k) / d_k.
+      double s0 = (lo - m_a[k]) * m_inverse[k], s1 = (hi - m_a[k]) * m_inverse[k];
+      if (s0 > s1) std::swap(s0, s1);
+      enter = std::max(enter, s0);
+      leave = std::min(leave, s1);
+      if (enter > leave) return false;
+    }
+    return true;
+  }
+
+ private:
+  std::array<double, 3> m_a{}, m_lo{}, m_hi{}, m_inverse{};
+  std::array<bool, 3> m_flat{};
+  double m_pad = 0;
+  bool m_finite = false;
+};
+
+// The same for one box.
+inline bool segmentTouchesBox(const Vec3& a, const Vec3& b, const Box3& box, Real pad) {
+  return SegmentQuery(a, b, pad).touches(box);
+}
 
 // The box of a triangle over a step: its vertices at the start and at the end, grown by margin.
 // Empty if any of the six points is not finite (such a triangle is never a candidate).
@@ -71,16 +108,17 @@ class TriangleBvh {
   template <class F>
   void forEachTouching(const Vec3& a, const Vec3& b, Real pad, F&& f) const {
     if (m_nodes.empty()) return;
+    const SegmentQuery segment(a, b, pad);
     std::array<std::size_t, 64> stack{};
     std::size_t top = 0;
     stack[top++] = 0;
     while (top > 0) {
       const std::size_t index = stack[--top];
       const Node& node = m_nodes[index];
-      if (!segmentTouchesBox(a, b, node.box, pad)) continue;
+      if (!segment.touches(node.box)) continue;
       if (node.count > 0) {
         for (std::size_t k = node.first; k < node.first + node.count; ++k)
-          if (segmentTouchesBox(a, b, m_boxes[m_order[k]], pad)) f(m_order[k]);
+          if (segment.touches(m_boxes[m_order[k]])) f(m_order[k]);
         continue;
       }
       // Inner node: its left child follows it (preorder); the right one is at node.first.
