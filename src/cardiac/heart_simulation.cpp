@@ -135,6 +135,10 @@ void HeartSimulation::buildBlood() {
     std::vector<std::uint8_t> wetted(m_model->mesh.vertices.size(), 0);
     for (std::size_t v = 0; v < wetted.size(); v += 2) wetted[v] = 1;
     m_wallContact->setWettedVertices(wetted);
+    // The wall's whole boundary (outward, particle ids: the wall is the first body), for the
+    // swept check of every blood step against the moving wall (pbd/swept_contact.h).
+    if (m_scenario.blood.wallContact == BloodSettings::WallContact::Continuous)
+      m_sweptContact = std::make_unique<pbd::SweptContact>(pbd::boundaryFaces(m_model->mesh.tets), m_particles.position);
     // The faces blood touches, all of whose vertices are wetted: they lend it their density.
     for (const pbd::Triangle& t : m_model->surface)
       if (wetted[t[0]] && wetted[t[1]] && wetted[t[2]]) m_lumenSurface.push_back(t);
@@ -299,6 +303,16 @@ void HeartSimulation::resolveBloodContacts(const pbd::StepContext& context) {
   m_circulation->valves.gateParticles(m_particles, m_firstBloodParticle);
   m_wallContact->resolve(m_particles, m_firstBloodParticle, Index(m_particles.size()), wallContactSettings(context));
   if (m_ends) m_ends->hold(m_particles);
+  // blood.wall_contact = continuous: each particle's whole step, from where it started to where
+  // it is now, against the wall moving from its start to its prediction, so that no step
+  // crosses the wall into the tissue, however fast or thin (docs/heart-blood.md).
+  if (m_sweptContact) {
+    pbd::SweptContactSettings swept;
+    swept.radius = m_scenario.blood.radius;
+    swept.slip = m_scenario.circulation.wallSlip;
+    swept.threads = context.threads;
+    m_sweptContact->resolve(m_particles, m_firstBloodParticle, Index(m_particles.size()), swept);
+  }
 }
 
 // What crossed where, then the loop: blood past a vessel's end waits, waiting blood re-enters.

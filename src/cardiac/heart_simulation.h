@@ -25,6 +25,7 @@
 #include "pbd/particle_tet_collision.h"
 #include "pbd/solver.h"
 #include "pbd/step_context.h"
+#include "pbd/swept_contact.h"
 
 namespace hs::cardiac {
 
@@ -134,6 +135,7 @@ class HeartSimulation {
   std::optional<CardiacCycle> m_cycle;
   std::unique_ptr<pbd::FluidSolver> m_fluid;
   std::unique_ptr<pbd::ParticleTetCollider> m_wallContact;  // heart and blood
+  std::unique_ptr<pbd::SweptContact> m_sweptContact;        // heart and blood, blood.wall_contact = continuous
   std::optional<Circulation> m_circulation;                 // heart and blood
   std::optional<LumpedCirculation> m_lumped;                // circulation.lumped
   std::optional<VolumeDrivenWall> m_drivenWall;             // circulation.lumped

@@ -99,6 +99,12 @@ struct BloodSettings {
   // packs about a fifth tighter along walls than inside, so a contracting cavity holds more
   // particles per volume at end-systole than at end-diastole.
   bool wallDensity = false;
+  // How blood is kept out of the heart wall after the wall's constraints (docs/heart-blood.md):
+  // Thesis: the push-out of particles found inside a tet at the end of the step (thesis eq.
+  // 4.12-4.20, pbd/particle_tet_collision.h) alone. Continuous: that push-out, then the swept
+  // check of each particle's whole step against the moving wall surface (pbd/swept_contact.h),
+  // so no step, however fast, crosses a wall however thin.
+  enum class WallContact { Continuous, Thesis } wallContact = WallContact::Continuous;
   bool tensileCorrection = false;   // PBF s_corr (eq. 13-14)
   Real tensileK = Real(0.1);
   int tensileN = 4;

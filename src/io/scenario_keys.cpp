@@ -176,6 +176,9 @@ std::vector<KeySpec> bloodKeys() {
       {"chamber", cardiac::BloodSettings::Start::Chamber},
       {"vessel", cardiac::BloodSettings::Start::Vessel},
       {"heart", cardiac::BloodSettings::Start::Heart}};
+  const std::vector<std::pair<std::string, cardiac::BloodSettings::WallContact>> wallContacts = {
+      {"continuous", cardiac::BloodSettings::WallContact::Continuous},
+      {"thesis", cardiac::BloodSettings::WallContact::Thesis}};
   return {
       boolKey("blood.enabled", HS_FIELD(blood.enabled), "Whether blood particles are simulated."),
       intKey("blood.particles", HS_FIELD(blood.particles), 0, "",
@@ -201,6 +204,10 @@ std::vector<KeySpec> bloodKeys() {
               "Particles keep 2 radii apart (thesis eq. 4.6)."),
       boolKey("blood.wall_density", HS_FIELD(blood.wallDensity),
               "The heart wall lends density to the blood beside it, so blood does not pack tighter along walls."),
+      choiceKey("blood.wall_contact", HS_FIELD(blood.wallContact), wallContacts,
+                "How blood is kept out of the heart wall: \"continuous\" (the thesis's push-out, then each "
+                "particle's whole step checked against the moving wall: no crossing at any speed) or \"thesis\" "
+                "(the push-out of particles found inside the wall at the end of the step alone)."),
       boolKey("blood.tensile_correction", HS_FIELD(blood.tensileCorrection),
               "Artificial pressure s_corr against clumping (PBF eq. 13)."),
       realKey("blood.tensile_k", HS_FIELD(blood.tensileK), between(0, 1), "",

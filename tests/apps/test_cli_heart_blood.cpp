@@ -189,4 +189,13 @@ TEST(CliHeartBlood, UnknownValveModeIsAOneLineError) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
+TEST(CliHeartBlood, UnknownWallContactIsAOneLineError) {
+  const auto dir = scratchDir("bad_wall_contact");
+  const CliResult r = runHeartsim("run normal --set blood.wall_contact=swept", dir);
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("blood.wall_contact"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("\"continuous\", \"thesis\""), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
 }  // namespace

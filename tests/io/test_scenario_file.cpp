@@ -247,6 +247,8 @@ std::vector<KeyCase> everyKeyCase() {
       {"blood.relaxation", "0.3", [](const Scenario& s) { return s.blood.relaxation == Real(0.3); }},
       {"blood.particle_collision", "true", [](const Scenario& s) { return s.blood.particleCollision; }},
       {"blood.wall_density", "true", [](const Scenario& s) { return s.blood.wallDensity; }},
+      {"blood.wall_contact", "thesis",
+       [](const Scenario& s) { return s.blood.wallContact == cardiac::BloodSettings::WallContact::Thesis; }},
       {"blood.tensile_correction", "true", [](const Scenario& s) { return s.blood.tensileCorrection; }},
       {"blood.tensile_k", "0.05", [](const Scenario& s) { return s.blood.tensileK == Real(0.05); }},
       {"blood.tensile_n", "3", [](const Scenario& s) { return s.blood.tensileN == 3; }},
