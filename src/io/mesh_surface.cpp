@@ -1,0 +1,124 @@
+// Surface meshes (.obj, .stl ASCII and binary, .ply, .off) through Assimp, Debian's
+// libassimp-dev (BSD-3): polygons triangulated, the scene's node transforms applied, vertices
+// at the same position merged (an STL gives each triangle its own three), triangles that
+// collapse when merged dropped. The OBJ's objects and groups ("o", "g") become markers by name.
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "io/mesh_import.h"
+#include "io/mesh_text.h"
+
+namespace hs::io {
+namespace {
+
+// The bits of a position, as a merge key: -0 and +0 are one point.
+struct PositionKey {
+  std::uint32_t bits[3];
+  bool operator==(const PositionKey& o) const { return std::memcmp(bits, o.bits, sizeof bits) == 0; }
+};
+struct PositionHash {
+  std::size_t operator()(const PositionKey& k) const {
+    return (std::size_t(k.bits[0]) * 73856093u) ^ (std::size_t(k.bits[1]) * 19349663u) ^ (std::size_t(k.bits[2]) * 83492791u);
+  }
+};
+
+struct SurfaceBuilder {
+  const std::string& name;
+  ImportedMesh mesh;
+  std::unordered_map<PositionKey, pbd::Index, PositionHash> vertexAt;
+  std::map<std::string, std::size_t> markerOf;
+
+  pbd::Index vertex(const aiVector3D& p) {
+    const pbd::Vec3 v(static_cast<pbd::Real>(p.x), static_cast<pbd::Real>(p.y), static_cast<pbd::Real>(p.z));
+    if (!v.allFinite())
+      throw std::invalid_argument(name + ": vertex (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " +
+                                  std::to_string(p.z) + ") is not finite; expected finite coordinates");
+    PositionKey key{};
+    for (int k = 0; k < 3; ++k) {
+      const float f = static_cast<float>(v[k]) + 0.0f;  // -0 + 0 = +0
+      std::memcpy(&key.bits[k], &f, sizeof f);
+    }
+    const auto [it, added] = vertexAt.try_emplace(key, static_cast<pbd::Index>(mesh.vertices.size()));
+    if (added) mesh.vertices.push_back(v);
+    return it->second;
+  }
+
+  void addMesh(const aiMesh& m, const aiMatrix4x4& transform, const std::string& group) {
+    SurfaceMarker* marker = nullptr;
+    if (!group.empty()) {
+      const auto [it, added] = markerOf.try_emplace(group, mesh.markers.size());
+      if (added) mesh.markers.push_back({group, -1, {}});
+      marker = &mesh.markers[it->second];
+    }
+    for (unsigned f = 0; f < m.mNumFaces; ++f) {
+      const aiFace& face = m.mFaces[f];
+      if (face.mNumIndices != 3) continue;  // points and lines; polygons are triangulated
+      pbd::Triangle triangle;
+      for (int k = 0; k < 3; ++k) {
+        const unsigned i = face.mIndices[k];
+        if (i >= m.mNumVertices)
+          throw std::invalid_argument(name + ": face " + std::to_string(f) + " uses vertex " + std::to_string(i) +
+                                      ", expected one of the " + std::to_string(m.mNumVertices) + " vertices");
+        triangle[static_cast<std::size_t>(k)] = vertex(transform * m.mVertices[i]);
+      }
+      if (triangle[0] == triangle[1] || triangle[1] == triangle[2] || triangle[0] == triangle[2]) continue;
+      if (marker != nullptr) marker->triangles.push_back(static_cast<pbd::Index>(mesh.triangles.size()));
+      mesh.triangles.push_back(triangle);
+    }
+  }
+
+  // Depth first, children in file order; the root's own name is the file's, not a group.
+  void addNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent, bool root, bool groups) {
+    const aiMatrix4x4 transform = parent * node.mTransformation;
+    // Assimp names the faces before any "o" or "g" line "defaultobject": no group of the file.
+    std::string group = groups && !root ? std::string(node.mName.C_Str()) : std::string();
+    if (group == "defaultobject") group.clear();
+    for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+      if (node.mMeshes[i] >= scene.mNumMeshes) throw std::invalid_argument(name + ": a node names a missing mesh");
+      addMesh(*scene.mMeshes[node.mMeshes[i]], transform, group);
+    }
+    for (unsigned c = 0; c < node.mNumChildren; ++c) addNode(scene, *node.mChildren[c], transform, false, groups);
+  }
+};
+
+// Assimp's message on one line, control characters replaced, at most 200 characters.
+std::string oneLine(std::string_view text) {
+  std::string out;
+  for (char c : text.substr(0, 200)) out += static_cast<unsigned char>(c) < 0x20 ? ' ' : c;
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out.empty() ? std::string("no message") : out;
+}
+
+}  // namespace
+
+ImportedMesh parseSurface(std::string_view bytes, const std::string& extension, const std::string& name) {
+  if (bytes.empty()) throw std::invalid_argument(name + ": empty file; expected a ." + extension + " surface mesh");
+  Assimp::Importer importer;
+  // Only triangles are kept; Assimp's own vertex joining would also compare normals, which an
+  // STL has per face, so vertices are merged by position below.
+  const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(),
+                                                     aiProcess_Triangulate | aiProcess_ValidateDataStructure,
+                                                     extension.c_str());
+  if (scene == nullptr || scene->mRootNode == nullptr)
+    throw std::invalid_argument(name + ": not a readable ." + extension + " mesh (Assimp: " +
+                                oneLine(importer.GetErrorString()) + ")");
+  SurfaceBuilder builder{name, {}, {}, {}};
+  builder.addNode(*scene, *scene->mRootNode, aiMatrix4x4(), true, extension == "obj");
+  builder.mesh.format = extension;
+  if (builder.mesh.triangles.empty())
+    throw std::invalid_argument(name + ": no triangles; expected a surface mesh with faces");
+  // A group without triangles of its own (an OBJ object holding only other groups) is no marker.
+  std::erase_if(builder.mesh.markers, [](const SurfaceMarker& m) { return m.triangles.empty(); });
+  finishMesh(builder.mesh, name, {});
+  return std::move(builder.mesh);
+}
+
+}  // namespace hs::io
