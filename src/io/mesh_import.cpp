@@ -33,8 +33,10 @@ ImportedMesh readTetgen(const fs::path& file) {
   const fs::path node = fs::path(stem).concat(".node"), ele = fs::path(stem).concat(".ele"),
                  face = fs::path(stem).concat(".face");
   std::error_code error;
+  const std::string nodeText = readWhole(node);
+  const std::string eleText = readWhole(ele);
   const std::string faceText = fs::exists(face, error) ? readWhole(face) : std::string();
-  return parseTetgen(readWhole(node), readWhole(ele), faceText, stem.string());
+  return parseTetgen(nodeText, eleText, faceText, stem.string());
 }
 
 }  // namespace

@@ -2,7 +2,9 @@
 // libassimp-dev (BSD-3): polygons triangulated, the scene's node transforms applied, vertices
 // at the same position merged (an STL gives each triangle its own three), triangles that
 // collapse when merged dropped. The OBJ's objects and groups ("o", "g") become markers by name.
+#include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
+#include <assimp/LogStream.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -97,11 +99,38 @@ std::string oneLine(std::string_view text) {
   return out.empty() ? std::string("no message") : out;
 }
 
+// Assimp's importers report some bad input only to its log and carry on (the OFF reader clamps
+// an out-of-range vertex index to the last vertex): errors logged while reading are caught
+// here and refuse the file. Assimp's logger is one per process; heartsim reads on one thread.
+class LoggedErrors : public Assimp::LogStream {
+ public:
+  LoggedErrors() {
+    m_created = Assimp::DefaultLogger::isNullLogger();
+    if (m_created) Assimp::DefaultLogger::create("", Assimp::Logger::NORMAL, 0);
+    Assimp::DefaultLogger::get()->attachStream(this, Assimp::Logger::Err);
+  }
+  ~LoggedErrors() override {
+    Assimp::DefaultLogger::get()->detachStream(this, Assimp::Logger::Err);
+    if (m_created) Assimp::DefaultLogger::kill();
+  }
+  LoggedErrors(const LoggedErrors&) = delete;
+  LoggedErrors& operator=(const LoggedErrors&) = delete;
+  void write(const char* message) override {
+    if (m_first.empty()) m_first = message;
+  }
+  const std::string& first() const { return m_first; }
+
+ private:
+  bool m_created = false;
+  std::string m_first;
+};
+
 }  // namespace
 
 ImportedMesh parseSurface(std::string_view bytes, const std::string& extension, const std::string& name) {
   if (bytes.empty()) throw std::invalid_argument(name + ": empty file; expected a ." + extension + " surface mesh");
   Assimp::Importer importer;
+  LoggedErrors errors;
   // Only triangles are kept; Assimp's own vertex joining would also compare normals, which an
   // STL has per face, so vertices are merged by position below.
   const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(),
@@ -110,6 +139,8 @@ ImportedMesh parseSurface(std::string_view bytes, const std::string& extension, 
   if (scene == nullptr || scene->mRootNode == nullptr)
     throw std::invalid_argument(name + ": not a readable ." + extension + " mesh (Assimp: " +
                                 oneLine(importer.GetErrorString()) + ")");
+  if (!errors.first().empty())
+    throw std::invalid_argument(name + ": not a valid ." + extension + " mesh (Assimp: " + oneLine(errors.first()) + ")");
   SurfaceBuilder builder{name, {}, {}, {}};
   builder.addNode(*scene, *scene->mRootNode, aiMatrix4x4(), true, extension == "obj");
   builder.mesh.format = extension;
