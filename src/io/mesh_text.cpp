@@ -2,6 +2,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 namespace hs::io {
@@ -77,8 +79,11 @@ double MeshTokens::real(std::string_view what) {
 pbd::Vec3 MeshTokens::point(std::string_view what) {
   const double x = real(what), y = real(what), z = real(what);
   const pbd::Vec3 p(static_cast<pbd::Real>(x), static_cast<pbd::Real>(y), static_cast<pbd::Real>(z));
-  if (!p.allFinite()) fail("expected " + std::string(what) + " within the range of pbd::Real, got (" +
-                           std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) + ")");
+  if (!p.allFinite()) {
+    std::ostringstream got;
+    got << std::setprecision(6) << '(' << x << ", " << y << ", " << z << ')';
+    fail("expected " + std::string(what) + " within the range of pbd::Real, got " + got.str());
+  }
   return p;
 }
 
