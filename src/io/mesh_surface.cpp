@@ -1,5 +1,5 @@
 // Surface meshes (.obj, .stl ASCII and binary, .ply, .off) through Assimp, Debian's
-// libassimp-dev (BSD-3): polygons triangulated, the scene's node transforms applied, vertices
+// libassimp-dev (BSD-3): polygons cut into fans, the scene's node transforms applied, vertices
 // at the same position merged (an STL gives each triangle its own three), triangles that
 // collapse when merged dropped. The OBJ's objects and groups ("o", "g") become markers by name.
 #include <assimp/DefaultLogger.hpp>
@@ -14,6 +14,7 @@
 #include <map>
 #include <stdexcept>
 #include <unordered_map>
+#include <vector>
 
 #include "io/mesh_import.h"
 #include "io/mesh_text.h"
@@ -62,18 +63,22 @@ struct SurfaceBuilder {
     }
     for (unsigned f = 0; f < m.mNumFaces; ++f) {
       const aiFace& face = m.mFaces[f];
-      if (face.mNumIndices != 3) continue;  // points and lines; polygons are triangulated
-      pbd::Triangle triangle;
-      for (int k = 0; k < 3; ++k) {
+      if (face.mNumIndices < 3) continue;  // points and lines
+      std::vector<pbd::Index> corners;
+      for (unsigned k = 0; k < face.mNumIndices; ++k) {
         const unsigned i = face.mIndices[k];
         if (i >= m.mNumVertices)
           throw std::invalid_argument(name + ": face " + std::to_string(f) + " uses vertex " + std::to_string(i) +
                                       ", expected one of the " + std::to_string(m.mNumVertices) + " vertices");
-        triangle[static_cast<std::size_t>(k)] = vertex(transform * m.mVertices[i]);
+        corners.push_back(vertex(transform * m.mVertices[i]));
       }
-      if (triangle[0] == triangle[1] || triangle[1] == triangle[2] || triangle[0] == triangle[2]) continue;
-      if (marker != nullptr) marker->triangles.push_back(static_cast<pbd::Index>(mesh.triangles.size()));
-      mesh.triangles.push_back(triangle);
+      // A polygon as a fan from its first corner: exact for the convex polygons meshers write.
+      for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
+        const pbd::Triangle triangle{corners[0], corners[k], corners[k + 1]};
+        if (triangle[0] == triangle[1] || triangle[1] == triangle[2] || triangle[0] == triangle[2]) continue;
+        if (marker != nullptr) marker->triangles.push_back(static_cast<pbd::Index>(mesh.triangles.size()));
+        mesh.triangles.push_back(triangle);
+      }
     }
   }
 
@@ -125,17 +130,62 @@ class LoggedErrors : public Assimp::LogStream {
   std::string m_first;
 };
 
+// Assimp's PLY reader loops without end on a header line that is not one of its keywords
+// (fuzz_mesh_surface found "element" with bytes >= 0x80 inside). The header is checked here
+// first: printable ASCII lines, each starting with a keyword of the format, up to end_header,
+// element counts no larger than the file.
+void checkPlyHeader(std::string_view bytes, const std::string& name) {
+  std::size_t pos = 0;
+  for (long line = 1; pos < bytes.size(); ++line) {
+    const std::size_t end = std::min(bytes.find('\n', pos), bytes.size());
+    std::string_view text = bytes.substr(pos, end - pos);
+    if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+    const auto fail = [&](const std::string& what) {
+      throw std::invalid_argument(name + ":" + std::to_string(line) + ": " + what);
+    };
+    for (char c : text)
+      if ((static_cast<unsigned char>(c) < 0x20 && c != '\t') || static_cast<unsigned char>(c) >= 0x7f)
+        fail("expected a PLY header line of printable ASCII, got '" + excerpt(text) + "'");
+    const std::string_view keyword = text.substr(0, text.find_first_of(" \t"));
+    if (line == 1 && keyword != "ply") fail("expected 'ply', got '" + excerpt(text) + "'");
+    if (keyword == "end_header") return;
+    if (keyword == "element") {  // "element NAME COUNT": no more elements than bytes in the file
+      MeshTokens tokens(text, name, '\0', line);
+      (void)tokens.next("element");
+      (void)tokens.next("an element name");
+      (void)tokens.count("an element count", countLimit(bytes));
+    }
+    if (line > 1 && keyword != "format" && keyword != "element" && keyword != "property" && keyword != "comment" &&
+        keyword != "obj_info")
+      fail("expected format, element, property, comment, obj_info or end_header, got '" + excerpt(text) + "'");
+    pos = end + 1;
+  }
+  throw std::invalid_argument(name + ": the PLY header has no end_header (truncated?)");
+}
+
+// Assimp's OFF reader allocates what the header's counts say before reading (a forged count of
+// 1e12 faces ran out of memory): the counts are checked against the file's size first.
+void checkOffCounts(std::string_view bytes, const std::string& name) {
+  MeshTokens tokens(bytes, name, '#');
+  std::string_view first = tokens.peek();
+  if (first.size() >= 3 && first.substr(first.size() - 3) == "OFF") (void)tokens.next("OFF");
+  (void)tokens.count("the number of vertices", countLimit(bytes));
+  (void)tokens.count("the number of faces", countLimit(bytes));
+}
+
 }  // namespace
 
 ImportedMesh parseSurface(std::string_view bytes, const std::string& extension, const std::string& name) {
   if (bytes.empty()) throw std::invalid_argument(name + ": empty file; expected a ." + extension + " surface mesh");
+  if (extension == "ply") checkPlyHeader(bytes, name);
+  if (extension == "off") checkOffCounts(bytes, name);
   Assimp::Importer importer;
   LoggedErrors errors;
-  // Only triangles are kept; Assimp's own vertex joining would also compare normals, which an
-  // STL has per face, so vertices are merged by position below.
-  const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(),
-                                                     aiProcess_Triangulate | aiProcess_ValidateDataStructure,
-                                                     extension.c_str());
+  // No post-processing but Assimp's validation: its triangulation aborted the process on a
+  // malformed PLY (fuzz_mesh_surface), so polygons are cut into fans here; its vertex joining
+  // would also compare normals, which an STL has per face, so vertices are merged by position.
+  const aiScene* scene =
+      importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_ValidateDataStructure, extension.c_str());
   if (scene == nullptr || scene->mRootNode == nullptr)
     throw std::invalid_argument(name + ": not a readable ." + extension + " mesh (Assimp: " +
                                 oneLine(importer.GetErrorString()) + ")");

@@ -160,5 +160,25 @@ TEST(MeshErrors, UnsupportedVariantsSaySo) {
   expectError(dir / "empty.stl", {"empty file"});
 }
 
+// Files fuzz_mesh_surface found: Assimp's triangulation aborted the process on the first PLY
+// (polygons are now cut into fans by heartsim), its header parser looped without end on the
+// second (the header is now checked first), its OFF reader ran out of memory on a count of
+// 1.2e12 faces (counts are now checked against the file's size). Each reads or gives one line.
+TEST(MeshErrors, FuzzFindingsOfTheSurfaceReaderGiveOneLineOrAMesh) {
+  const std::string dir = std::string(HS_TEST_DATA_DIR) + "/meshes/fuzz_findings/";
+  for (const char* file : {"triangulate_abort.ply", "header_hang.ply", "huge_count.off"}) {
+    SCOPED_TRACE(file);
+    try {
+      const io::ImportedMesh mesh = io::readMesh(dir + file);
+      EXPECT_FALSE(mesh.triangles.empty());
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(file), std::string::npos) << e.what();
+    }
+  }
+  expectError(dir + "header_hang.ply", {"header_hang.ply:3:", "printable ASCII"});
+  expectError(dir + "huge_count.off", {"huge_count.off:2:", "the number of faces in [0, "});
+}
+
 }  // namespace
 }  // namespace hs::testing
