@@ -1,4 +1,4 @@
-// heartsim: the command-line entry point. Subcommands: run, view, render, bench, validate.
+// heartsim: the command-line entry point. Subcommands: run, view, render, bench, validate, compare, mesh.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <iostream>
@@ -9,6 +9,7 @@
 #include "bench_command.h"
 #include "compare_command.h"
 #include "exit_codes.h"
+#include "mesh_command.h"
 #include "render_command.h"
 #include "run_command.h"
 #include "validate_command.h"
@@ -39,6 +40,8 @@ struct Commands {
   hs::app::BenchOptions bench;
   hs::app::ValidateOptions validate;
   hs::app::CompareOptions compare;
+  hs::app::MeshOptions mesh;
+  CLI::App* meshApp = nullptr;
   CLI::App* compareApp = nullptr;
   CLI::App* runApp = nullptr;
   CLI::App* renderApp = nullptr;
@@ -140,6 +143,13 @@ void addValidateCommand(CLI::App& app, Commands& c) {
   damBreakApp->add_flag("--json", validate.json, "Print one JSON report object on stdout");
 }
 
+void addMeshCommand(CLI::App& app, Commands& c) {
+  CLI::App* meshApp = c.meshApp = app.add_subcommand(
+      "mesh", "Read a patient mesh (.obj .stl .ply .off .msh .vtu .vtk .node) and print what it holds");
+  meshApp->add_option("file", c.mesh.file, "The mesh file")->required();
+  meshApp->add_flag("--json", c.mesh.json, "Print one JSON object on stdout");
+}
+
 std::string joinedNames(const std::vector<CLI::App*>& subcommands) {
   std::string names;
   for (const CLI::App* sub : subcommands) names += (names.empty() ? "" : ", ") + sub->get_name();
@@ -191,6 +201,7 @@ int dispatch(Commands& c) {
   if (c.benchApp->parsed()) return benchCommand(c.bench);
   if (c.damBreakApp->parsed()) return validateDamBreakCommand(c.validate);
   if (c.compareApp->parsed()) return compareCommand(c.compare);
+  if (c.meshApp->parsed()) return meshCommand(c.mesh);
   return kExitBadInput;
 }
 
@@ -208,6 +219,7 @@ int main(int argc, char** argv) {
   addBenchCommand(app, commands);
   addValidateCommand(app, commands);
   addCompareCommand(app, commands);
+  addMeshCommand(app, commands);
   if (const std::optional<std::string> unknown = unknownSubcommand(app, argc, argv)) {
     std::cerr << "heartsim: error: " << *unknown << " (see heartsim --help)\n";
     return kExitBadInput;

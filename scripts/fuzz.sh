@@ -1,15 +1,16 @@
 #!/usr/bin/env bash
 # scripts/fuzz.sh [SECONDS] [TARGET...]: builds the libFuzzer targets (fuzz/, clang with ASan and
 # UBSan: the `fuzz` preset) and runs each for SECONDS (default 60) on one core, seeded with the
-# built-in scenarios and lessons, and with a checkpoint of `normal` written by the release build
-# (or by $HEARTSIM when set). A crash leaves its input in build/fuzz/findings/<target>/ and makes
-# the script exit non-zero. Installs clang and libFuzzer first if they are missing.
+# built-in scenarios and lessons, the meshes of fuzz/seeds/, and with a checkpoint of `normal`
+# written by the release build (or by $HEARTSIM when set). A crash leaves its input in
+# build/fuzz/findings/<target>/ and makes the script exit non-zero. Installs clang and libFuzzer first if they are missing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(fuzz_scenario fuzz_set fuzz_lesson fuzz_checkpoint)
+[ ${#targets[@]} -eq 0 ] && targets=(fuzz_scenario fuzz_set fuzz_lesson fuzz_checkpoint
+                                     fuzz_mesh_gmsh fuzz_mesh_tetgen fuzz_mesh_vtk fuzz_mesh_surface)
 scripts/install-deps.sh --fuzz
 cmake --preset fuzz >&2  # every time: a target added to fuzz/ since the last configure
 scripts/build.sh fuzz "${targets[@]}"
@@ -20,6 +21,7 @@ for t in "${targets[@]}"; do
   case $t in
     fuzz_scenario) cp -n scenarios/*.toml "$corpus"/ ;;
     fuzz_lesson) cp -n lessons/*.toml "$corpus"/ ;;
+    fuzz_mesh_*) cp -n fuzz/seeds/"$t"/* "$corpus"/ ;;  # a marked 6-tet box in each format (tests/io/mesh_writers.h)
     fuzz_checkpoint)  # two checkpoints of `normal`: without and with the run monitor's state
       if [ ! -f "$corpus/normal-run.hsck" ]; then
         heartsim=${HEARTSIM:-build/release/apps/heartsim}

@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libhwy-dev
   libgtest-dev libbenchmark-dev
   libstb-dev
+  libassimp-dev
   libglfw3-dev libimgui-dev libepoxy-dev libegl-dev libgl-dev libgl1-mesa-dri libegl-mesa0
   xvfb xauth
 )
