@@ -229,11 +229,46 @@ void forRanges(std::size_t count, int threads, const Range& range) {
   }
 }
 
+// Per-entry cost of a neighbour loop: its pairs plus a particle's own work, in pairs.
+constexpr std::size_t kParticleCostInPairs = 8;
+
+// The same over the subset's entries, the blocks cut so that each thread gets about the same
+// number of neighbour pairs rather than of particles: slots come in cell order, and whole runs
+// of them are blood parked outside the heart with no neighbours, which left one thread with
+// most of the work (normal, 2 threads: the density kernels took longer than on one).
+template <class Range>
+void forBalancedRanges(const ListView& lists, const Index* subset, std::size_t count, int threads,
+                       const Range& range) {
+  if (count < std::size_t(kFluidParallelThreshold) || threads <= 1) {
+    range(std::size_t(0), count);
+    return;
+  }
+  auto cost = [&](std::size_t s) {
+    const Index i = subset[s];
+    return std::size_t(lists.offsets[i + 1] - lists.offsets[i]) + kParticleCostInPairs;
+  };
+  std::size_t total = 0;
+  for (std::size_t s = 0; s < count; ++s) total += cost(s);
+  std::vector<std::size_t> cut(std::size_t(threads) + 1, count);
+  cut[0] = 0;
+  std::size_t done = 0, team = 1;
+  for (std::size_t s = 0; s < count && team < std::size_t(threads); ++s) {
+    done += cost(s);
+    while (team < std::size_t(threads) && done * std::size_t(threads) >= total * team) cut[team++] = s + 1;
+  }
+#pragma omp parallel num_threads(threads)
+  {
+    const auto t = std::size_t(omp_get_thread_num());
+    if (omp_get_num_threads() == threads) range(cut[t], cut[t + 1]);
+    else if (t == 0) range(std::size_t(0), count);  // a smaller team than asked: one does all
+  }
+}
+
 // The same for an exported range function; the dispatch is resolved before the threads start.
 template <class Job>
 void runRanges(void (*range)(const Job&, std::size_t, std::size_t), const Job& job, std::size_t count,
                int threads) {
-  forRanges(count, threads, [&](std::size_t begin, std::size_t end) { range(job, begin, end); });
+  forBalancedRanges(job.lists, job.subset, count, threads, [&](std::size_t begin, std::size_t end) { range(job, begin, end); });
 }
 
 // The function of the chosen target (choosing it on the first call).

@@ -15,6 +15,10 @@ namespace {
 
 // Below this many particles a fork-join costs more than the loop saves.
 constexpr std::ptrdiff_t kParallelThreshold = 256;
+// The loops over particles hand out chunks of this many as threads free up (schedule dynamic):
+// the particles at the wall, which cost the most, come in runs (cell order), and a static
+// split gave one thread most of them. Each particle's result is its own, so the chunks change
+// nothing but who computes what.
 
 // Rounds of "out through the nearest boundary face" for a particle a push left inside
 // another tet; two faces of a corner need one each, and a few more cover three-face corners.
@@ -297,7 +301,7 @@ std::size_t ParticleTetCollider::resolve(Particles& particles, Index first, Inde
   if (settings.twoWay)
     m_wallCorrections.assign(std::size_t(std::max<std::ptrdiff_t>(count, 0)), WallCorrection{});
   std::size_t moved = 0;
-#pragma omp parallel for schedule(static) num_threads(settings.threads) reduction(+ : moved) \
+#pragma omp parallel for schedule(dynamic, 64) num_threads(settings.threads) reduction(+ : moved) \
     if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = first + Index(s);
@@ -332,7 +336,7 @@ std::size_t ParticleTetCollider::resolvePoints(const Particles& particles, std::
   rebuild(particles.predicted, Real(1e-3) * settings.radius);
   const auto count = std::ptrdiff_t(ids.size());
   std::size_t moved = 0;
-#pragma omp parallel for schedule(static) num_threads(settings.threads) reduction(+ : moved) \
+#pragma omp parallel for schedule(dynamic, 64) num_threads(settings.threads) reduction(+ : moved) \
     if (count >= kParallelThreshold)
   for (std::ptrdiff_t k = 0; k < count; ++k) {
     const Index i = ids[std::size_t(k)];
@@ -351,7 +355,7 @@ std::size_t ParticleTetCollider::countInside(const std::vector<Vec3>& positions,
   rebuild(positions, m_builtValid ? m_builtPadding : Real(0));
   const std::ptrdiff_t count = std::ptrdiff_t(end) - std::ptrdiff_t(first);
   std::size_t inside = 0;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(+ : inside) \
+#pragma omp parallel for schedule(dynamic, 64) num_threads(threads) reduction(+ : inside) \
     if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Vec3& x = positions[first + Index(s)];

@@ -207,7 +207,7 @@ std::size_t SweptContact::resolve(Particles& particles, Index first, Index end, 
   const std::ptrdiff_t count = std::ptrdiff_t(end) - std::ptrdiff_t(first);
   std::size_t moved = 0, unresolved = 0;
   // Each iteration reads the surface's vertices (never in [first, end)) and writes only p[i].
-#pragma omp parallel for schedule(static) num_threads(settings.threads) reduction(+ : moved, unresolved) \
+#pragma omp parallel for schedule(dynamic, 64) num_threads(settings.threads) reduction(+ : moved, unresolved) \
     if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = first + Index(s);

@@ -149,7 +149,7 @@ void findNearestWalls(const WallTriangleGrid& grid, const std::vector<Vec3>& ver
   if (!grid.valid()) return;
   const Real reach = grid.reach();
   const auto n = std::ptrdiff_t(points.size());
-#pragma omp parallel for schedule(static) num_threads(threads) if (n >= 256)
+#pragma omp parallel for schedule(dynamic, 64) num_threads(threads) if (n >= 256)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const Vec3& p = points[std::size_t(i)];
     std::size_t cell = 0;
