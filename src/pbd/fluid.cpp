@@ -16,6 +16,10 @@ namespace hs::pbd {
 namespace {
 
 constexpr std::ptrdiff_t kParallelThreshold = kFluidParallelThreshold;
+// The neighbour loops hand out chunks of this many particles as threads free up (as the SIMD
+// path cuts its blocks by neighbour pairs, fluid_simd.cpp): slots come in cell order with whole
+// runs of neighbourless parked blood, so a static split leaves one thread most of the work.
+// Each particle's result is its own, so the chunks change nothing but who computes what.
 
 bool useSimd([[maybe_unused]] const FluidSettings& settings) {
 #ifdef HS_HAVE_HIGHWAY
@@ -99,7 +103,7 @@ void computeDensities(const std::vector<Vec3>& positions, const NeighbourLists& 
   const Real selfTerm = poly6SelfTerm(kernels);
   const ListView view = viewOf(lists);
   const std::ptrdiff_t count = std::ptrdiff_t(subset.size());
-#pragma omp parallel for schedule(static) num_threads(threads) if (count >= kParallelThreshold)
+#pragma omp parallel for schedule(dynamic, 64) num_threads(threads) if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
     // rho_i = m sum_j W(x_i - x_j) (PBF eq. 2), self term first.
@@ -135,7 +139,7 @@ void computeLambdas(const std::vector<Vec3>& positions, const NeighbourLists& li
   const LambdaJob job =
       makeLambdaJob(positions, lists, subset, kernels, settings, densities, lambdas, pairGradients, walls);
   const std::ptrdiff_t count = std::ptrdiff_t(subset.size());
-#pragma omp parallel for schedule(static) num_threads(threads) if (count >= kParallelThreshold)
+#pragma omp parallel for schedule(dynamic, 64) num_threads(threads) if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
     // PBF eq. 8: grad_{p_i} C_i = (m/rho0) sum_j grad W_ij, grad_{p_j} C_i = -(m/rho0) grad W_ij.
@@ -169,7 +173,7 @@ void computeDensityCorrections(const std::vector<Vec3>& positions, const Neighbo
       makeCorrectionJob(positions, lists, subset, kernels, settings, lambdas, corrections, pairGradients, walls);
   const Real contact2 = job.contact * job.contact;
   const std::ptrdiff_t count = std::ptrdiff_t(subset.size());
-#pragma omp parallel for schedule(static) num_threads(threads) if (count >= kParallelThreshold)
+#pragma omp parallel for schedule(dynamic, 64) num_threads(threads) if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
     const Real li = job.lambdas[i];
@@ -207,7 +211,7 @@ void applyViscosity(const std::vector<Vec3>& positions, const std::vector<Vec3>&
 #endif
   const ViscosityJob job = makeViscosityJob(positions, velocities, lists, subset, kernels, settings, dt, newVelocities);
   const std::ptrdiff_t count = std::ptrdiff_t(subset.size());
-#pragma omp parallel for schedule(static) num_threads(threads) if (count >= kParallelThreshold)
+#pragma omp parallel for schedule(dynamic, 64) num_threads(threads) if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
     const Vec3& vi = job.velocities[i];
@@ -240,7 +244,7 @@ void applyVorticityConfinement(const std::vector<Vec3>& positions, const std::ve
   // PBF eq. 15: omega_i = sum_j (m/rho0) (v_i - v_j) x grad_i W(x_ij), the SPH curl of v
   // (= PBF's sum_j (v_j - v_i) x grad_j W; a rigid rotation Omega gives omega ~ 2 Omega).
   // Neighbours outside the subset keep vorticity 0: the subset is normally all fluid.
-#pragma omp parallel for schedule(static) num_threads(threads) if (count >= kParallelThreshold)
+#pragma omp parallel for schedule(dynamic, 64) num_threads(threads) if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
     Vec3 omega = Vec3::Zero();
@@ -250,7 +254,7 @@ void applyVorticityConfinement(const std::vector<Vec3>& positions, const std::ve
     job.vorticity[i] = job.scale * omega;
   }
   // PBF eq. 16: f = eps (N x omega), N = eta/|eta|, eta = grad |omega| (SPH difference form).
-#pragma omp parallel for schedule(static) num_threads(threads) if (count >= kParallelThreshold)
+#pragma omp parallel for schedule(dynamic, 64) num_threads(threads) if (count >= kParallelThreshold)
   for (std::ptrdiff_t s = 0; s < count; ++s) {
     const Index i = subset[std::size_t(s)];
     const Real wi = job.vorticity[i].norm();
