@@ -106,6 +106,7 @@ void TriangleBvh::refit(const std::vector<Vec3>& start, const std::vector<Vec3>&
     node.box = m_nodes[n + 1].box;
     node.box.grow(m_nodes[node.first].box);
   }
+  m_grid.build(m_boxes, threads);
 }
 
 }  // namespace hs::pbd

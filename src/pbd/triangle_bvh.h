@@ -22,30 +22,18 @@
 //    and max do not depend on the order anyway.
 //  * Queries are const: safe from any number of threads at once.
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <utility>
 #include <algorithm>
 #include <vector>
 
+#include "pbd/box_grid.h"
 #include "pbd/tet_mesh.h"
 #include "pbd/types.h"
 
 namespace hs::pbd {
-
-// An axis-aligned box; empty (lo > hi) when it holds nothing.
-struct Box3 {
-  Vec3 lo = Vec3::Constant(std::numeric_limits<Real>::infinity());
-  Vec3 hi = Vec3::Constant(-std::numeric_limits<Real>::infinity());
-  void grow(const Vec3& p) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  void grow(const Box3& b) {
-    lo = lo.cwiseMin(b.lo);
-    hi = hi.cwiseMax(b.hi);
-  }
-};
 
 // A segment a -> b grown by pad, prepared for many box tests: its own box (a cheap first
 // reject: most boxes a short step is tested against are nowhere near it) and, per axis, the
@@ -74,7 +62,22 @@ class SegmentQuery {
     return true;
   }
 
+  // The segment's box grown by pad, and by a relative hair more: a box that touches() accepts
+  // overlaps it whatever the rounding of lo - pad against hi + pad. Not finite when the segment
+  // is not.
+  [[nodiscard]] std::array<double, 3> paddedLo() const { return padded(m_lo, -1); }
+  [[nodiscard]] std::array<double, 3> paddedHi() const { return padded(m_hi, +1); }
+
  private:
+  std::array<double, 3> padded(const std::array<double, 3>& v, double sign) const {
+    std::array<double, 3> out{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const double grown = v[k] + sign * m_pad;
+      out[k] = m_finite ? grown + sign * 1e-9 * (std::abs(grown) + m_pad) : std::numeric_limits<double>::quiet_NaN();
+    }
+    return out;
+  }
+
   std::array<double, 3> m_a{}, m_lo{}, m_hi{}, m_inverse{};
   std::array<bool, 3> m_flat{};
   double m_pad = 0;
@@ -104,11 +107,16 @@ class TriangleBvh {
   void refit(const std::vector<Vec3>& start, const std::vector<Vec3>& end, Real margin, int threads = 1);
 
   // Calls f(triangle index) once for every triangle whose swept box the segment a -> b, grown
-  // by pad, touches (segmentTouchesBox). The order is the tree's, the same on every call.
+  // by pad, touches (segmentTouchesBox). The order is the same on every call: the cells' for a
+  // short segment (the grid of the same boxes, box_grid.h), the tree's for a long one.
   template <class F>
   void forEachTouching(const Vec3& a, const Vec3& b, Real pad, F&& f) const {
     if (m_nodes.empty()) return;
     const SegmentQuery segment(a, b, pad);
+    if (m_grid.forEachCandidate(segment.paddedLo(), segment.paddedHi(), [&](std::size_t t) {
+          if (segment.touches(m_boxes[t])) f(t);
+        }))
+      return;
     std::array<std::size_t, 64> stack{};
     std::size_t top = 0;
     stack[top++] = 0;
@@ -145,6 +153,7 @@ class TriangleBvh {
   std::vector<Node> m_nodes;         // preorder: a node's children come after it
   std::vector<std::size_t> m_leaves; // node indices of the leaves
   std::vector<Box3> m_boxes;         // per triangle, from the last refit
+  BoxGrid m_grid;                    // the same boxes in cells, for short queries
   std::size_t m_depth = 0;
 };
 
