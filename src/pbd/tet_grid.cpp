@@ -15,6 +15,8 @@ constexpr double kMinCells = 64;
 constexpr double kCellGrowth = 1.001;
 // Cell coordinates along an axis are capped (only reached on the way to a grid within the cap).
 constexpr double kMaxCoord = 1e15;
+// Below this many entries copying the boxes on one thread beats a fork-join.
+constexpr std::ptrdiff_t kParallelEntries = 32768;
 
 }  // namespace
 
@@ -88,6 +90,19 @@ void TetGrid::build(const std::vector<Vec3>& vertices, const std::vector<Tet>& t
     if (m_cells.cellRange(m_lo[t], m_hi[t], r)) m_cells.forEachCell(r, [&emit](std::size_t cell, auto...) { emit(cell); });
   });
   if (!fits) throw std::length_error("TetGrid: too many entries");
+  const std::vector<Index>& items = m_grid.items();
+  m_entryBoxes.resize(items.size());
+  const auto entries = std::ptrdiff_t(items.size());
+#pragma omp parallel for schedule(static) num_threads(m_settings.threads) if (entries >= kParallelEntries)
+  for (std::ptrdiff_t e = 0; e < entries; ++e) {
+    const Index t = items[std::size_t(e)];
+    EntryBox& b = m_entryBoxes[std::size_t(e)];
+    for (int k = 0; k < 3; ++k) {
+      b.lo[k] = m_lo[t][k];
+      b.hi[k] = m_hi[t][k];
+    }
+    b.tet = t;
+  }
 }
 
 void TetGrid::candidates(const Vec3& p, std::vector<Index>& out) const {
