@@ -110,22 +110,54 @@ std::optional<BoundaryExit> boundaryExit(const std::vector<Vec3>& x, const Trian
 }  // namespace
 
 // Last resort for a particle no tet-by-tet push could free: the closest point q of the
-// boundary surface, and p* = q + radius n with n that face's outward normal. Brute force over
-// the boundary: it runs only for such particles (rare: corners and ridges). The wall point
-// pushed away from is q.
+// boundary surface, and p* = q + radius n with n that face's outward normal; of equally near
+// faces the first. It runs only for such particles (corners and ridges), but a brute force over
+// the boundary cost as much as all other pushes together. The face with the nearest box is
+// tried first; its distance bounds the answer, and a face whose box is farther (a lower bound
+// of its own distance) can be neither nearer nor equal, so it is skipped: the same face as the
+// brute force. "Farther" with a margin of 1e-5 of the coordinates' size, far above the float
+// rounding of the two distances, so that rounding cannot skip a face the brute force keeps.
+// The wall point pushed away from is q.
 Vec3 ParticleTetCollider::nearestBoundaryExit(const std::vector<Vec3>& x, const Vec3& p, Real radius,
                                               WallContact& contact) const {
-  Real best = std::numeric_limits<Real>::infinity();
-  Vec3 result = p;
-  for (const Triangle& f : m_boundary) {
-    const std::optional<BoundaryExit> exit = boundaryExit(x, f, p, radius);
-    if (!exit || !(exit->distance2 < best)) continue;
-    best = exit->distance2;
-    result = exit->position;
-    contact.vertices = f;
-    contact.weights = triangleWeights(exit->closest, x[f[0]], x[f[1]], x[f[2]]);
+  auto boxDistance2 = [&](std::size_t k) {
+    const auto& [lo, hi] = m_boundaryBoxes[k];
+    return (p - p.cwiseMax(lo).cwiseMin(hi)).squaredNorm();
+  };
+  const std::size_t faces = m_boundary.size();
+  std::size_t first = faces;
+  Real firstBox = std::numeric_limits<Real>::infinity();
+  for (std::size_t k = 0; k < faces; ++k) {
+    const Real d2 = boxDistance2(k);
+    if (d2 < firstBox) firstBox = d2, first = k;
   }
-  return result;
+  Real best = std::numeric_limits<Real>::infinity(), skipBeyond = best;
+  std::size_t bestFace = faces;
+  std::optional<BoundaryExit> bestExit;
+  const Real scale = p.cwiseAbs().maxCoeff();
+  auto offer = [&](std::size_t k) {
+    const std::optional<BoundaryExit> exit = boundaryExit(x, m_boundary[k], p, radius);
+    if (!exit || !(exit->distance2 < best || (exit->distance2 == best && k < bestFace))) return;
+    best = exit->distance2;
+    bestFace = k;
+    bestExit = exit;
+    const Real reach = std::sqrt(best) * (1 + Real(1e-5)) + Real(1e-5) * scale;
+    skipBeyond = reach * reach;
+  };
+  if (first < faces) offer(first);
+  for (std::size_t k = 0; k < faces; ++k)
+    if (k != first && !(boxDistance2(k) > skipBeyond)) offer(k);
+  if (!bestExit) return p;
+  const Triangle& f = m_boundary[bestFace];
+  contact.vertices = f;
+  contact.weights = triangleWeights(bestExit->closest, x[f[0]], x[f[1]], x[f[2]]);
+  return bestExit->position;
+}
+
+Vec3 ParticleTetCollider::nearestBoundaryExitAt(const std::vector<Vec3>& positions, const Vec3& p, Real radius) {
+  rebuild(positions, m_builtValid ? m_builtPadding : Real(0));
+  WallContact contact;
+  return nearestBoundaryExit(positions, p, radius, contact);
 }
 
 // Where the nearest exit lands in the solid again (a ridge between two lumens, where the
@@ -166,6 +198,12 @@ void ParticleTetCollider::rebuild(const std::vector<Vec3>& positions, Real paddi
   m_built.assign(begin, end);
   m_builtPadding = padding;
   m_builtValid = true;
+  m_boundaryBoxes.resize(m_boundary.size());
+  for (std::size_t k = 0; k < m_boundary.size(); ++k) {
+    const Triangle& f = m_boundary[k];
+    m_boundaryBoxes[k] = {positions[f[0]].cwiseMin(positions[f[1]]).cwiseMin(positions[f[2]]),
+                          positions[f[0]].cwiseMax(positions[f[1]]).cwiseMax(positions[f[2]])};
+  }
   // Points on a shared face count as inside both tets (kBarycentricSlack), so the boxes are
   // padded by a hair to keep such points among the candidates.
   TetGridSettings grid = m_grid.settings();

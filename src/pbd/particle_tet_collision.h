@@ -105,6 +105,11 @@ class ParticleTetCollider {
   std::size_t countInside(const std::vector<Vec3>& positions, Index first, Index end, Real minDepth,
                           int threads = 1);
 
+  // The last resort's exit for a point p with the solid at `positions` (solid and points from
+  // the same array): the nearest boundary face's closest point to p, plus radius along that
+  // face's outward normal; of equally near faces the first. Public for its brute-force test.
+  Vec3 nearestBoundaryExitAt(const std::vector<Vec3>& positions, const Vec3& p, Real radius);
+
   const std::vector<Tet>& tets() const { return m_tets; }
 
   // The particles live on one side of the solid (blood in a heart: the cavity and vessel
@@ -147,6 +152,7 @@ class ParticleTetCollider {
   // faces, toward its neighbours).
   std::vector<std::uint8_t> m_exitFaces;
   std::vector<Triangle> m_boundary;  // boundary faces a particle may be put beyond, outward (particle ids)
+  std::vector<std::array<Vec3, 2>> m_boundaryBoxes;  // their boxes (lo, hi) at the last rebuild()
   Index m_firstVertex = 0;
   std::size_t m_vertexEnd = 0;  // one past the solid's last particle id
   // The solid's vertices and padding of the last grid build (rebuild() skips an identical one).

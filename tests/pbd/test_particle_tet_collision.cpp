@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "box_mesh.h"
+#include "pbd/mesh_collider.h"
 #include "pbd/particle_tet_collision.h"
 #include "pbd/tet_geometry.h"
 
@@ -521,6 +522,42 @@ TEST(ParticleTetCollision, ParticleCaughtAtANarrowGapTakesTheNearestFreeExit) {
     for (const Tet& t : tets) ASSERT_FALSE(isPointInTet(tetPoints(p.predicted, t), x, Real(0))) << x.transpose();
     EXPECT_NEAR(x.y(), 1 + s.radius, 1e-5) << x.transpose();  // out through the top
     EXPECT_NEAR(x.x(), Real(0.99), 1e-5) << x.transpose();
+  }
+}
+
+}  // namespace
+}  // namespace hs::pbd
+
+namespace hs::pbd {
+namespace {
+
+// The last resort's nearest boundary exit skips faces by their boxes; it must pick the face a
+// search of every boundary face picks (the first of the nearest), for points inside, on the
+// surface and outside a deformed cube.
+TEST(ParticleTetCollision, NearestBoundaryExitMatchesBruteForce) {
+  World w = world(0, 1, false);
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> jitter(-0.05, 0.05), u(-0.3, 1.3);
+  for (Vec3& v : w.particles.position) v += Vec3(Real(jitter(rng)), Real(jitter(rng)), Real(jitter(rng)));
+  ParticleTetCollider collider(w.cube.tets, 0);
+  const std::vector<Triangle> faces = boundaryFaces(collider.tets());
+  const std::vector<Vec3>& x = w.particles.position;
+  const Real radius = Real(0.01);
+  for (int q = 0; q < 3000; ++q) {
+    Vec3 p(Real(u(rng)), Real(u(rng)), Real(u(rng)));
+    if (q % 10 == 0) p = x[std::size_t(q) % x.size()];  // on a vertex: many faces equally near
+    Real best = std::numeric_limits<Real>::infinity();
+    Vec3 expected = p;
+    for (const Triangle& f : faces) {
+      const Vec3 c = closestPointOnTriangle(p, x[f[0]], x[f[1]], x[f[2]]);
+      const Vec3 n = (x[f[1]] - x[f[0]]).cross(x[f[2]] - x[f[0]]);
+      if (!(n.norm() > 0) || !((c - p).squaredNorm() < best)) continue;
+      best = (c - p).squaredNorm();
+      expected = c + (radius / n.norm()) * n;
+    }
+    const Vec3 got = collider.nearestBoundaryExitAt(x, p, radius);
+    EXPECT_TRUE(got.x() == expected.x() && got.y() == expected.y() && got.z() == expected.z())
+        << "query " << q << ": got " << got.transpose() << ", brute force " << expected.transpose();
   }
 }
 
