@@ -51,51 +51,77 @@ Real WallDensityTable::lookup(const std::vector<Real>& table, Real d) const {
 
 namespace {
 
-// The nearest of `candidates` (triangle ids, repeats allowed) to p within `reach`; of equally
-// near ones the lowest id, so the answer does not depend on the candidates' order.
-// `boxes` (lo, hi per triangle, optional) let a triangle whose box is farther than the best so
-// far be skipped.
-template <class Ids>
-WallProximity nearestOf(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles, const Ids& candidates,
-                        const Vec3& p, Real reach, const std::vector<std::array<Vec3, 2>>* boxes = nullptr) {
-  Real best = reach * reach;
-  Index bestId = ~Index(0);
-  Vec3 closest = Vec3::Zero();
-  auto boxDistance2 = [&](Index t) {
-    const auto& [lo, hi] = (*boxes)[t];
-    return (p - p.cwiseMax(lo).cwiseMin(hi)).squaredNorm();
-  };
-  auto offer = [&](Index t) {
-    const Triangle& tri = triangles[t];
-    const Vec3 c = closestPointOnTriangle(p, x[tri[0]], x[tri[1]], x[tri[2]]);
-    const Real d2 = (p - c).squaredNorm();
-    if (d2 < best || (d2 == best && t < bestId)) {
-      best = d2;
-      bestId = t;
-      closest = c;
+// The running nearest triangle to p within reach (closest point on each, Ericson 5.1.5):
+// candidates may be offered in any order and repeated; the minimum distance, ties to the lowest
+// id, does not depend on it.
+class NearestTriangle {
+ public:
+  NearestTriangle(const std::vector<Vec3>& x, const std::vector<Triangle>& triangles, const Vec3& p, Real reach)
+      : m_x(x), m_triangles(triangles), m_p(p), m_best(reach * reach) {}
+
+  void offer(Index t) {
+    const Triangle& tri = m_triangles[t];
+    const Vec3 c = closestPointOnTriangle(m_p, m_x[tri[0]], m_x[tri[1]], m_x[tri[2]]);
+    const Real d2 = (m_p - c).squaredNorm();
+    if (d2 < m_best || (d2 == m_best && t < m_bestId)) {
+      m_best = d2;
+      m_bestId = t;
+      m_closest = c;
     }
-  };
-  if (boxes) {
-    // The triangle with the nearest box first: its distance bounds the others' from above, and
-    // most boxes are then farther than it. The result is the same minimum (ties to the lowest id).
-    thread_local std::vector<Real> boxDistances;
-    boxDistances.resize(candidates.size());
-    std::size_t first = candidates.size();
-    Real firstBox = best;
-    for (std::size_t k = 0; k < candidates.size(); ++k) {
-      boxDistances[k] = boxDistance2(candidates[k]);
-      if (boxDistances[k] < firstBox) firstBox = boxDistances[k], first = k;
-    }
-    if (first == candidates.size()) return {};
-    offer(candidates[first]);
-    for (std::size_t k = 0; k < candidates.size(); ++k)
-      if (k != first && !(boxDistances[k] > best)) offer(candidates[k]);
-  } else {
-    for (Index t : candidates) offer(t);
   }
-  const Real d = std::sqrt(best);
-  if (bestId == ~Index(0) || !(d > Real(0))) return {};
-  return {d, (p - closest) / d};
+  // The squared distance to beat (reach^2 until a triangle within reach is found).
+  [[nodiscard]] Real best2() const { return m_best; }
+  [[nodiscard]] WallProximity result() const {
+    const Real d = std::sqrt(m_best);
+    if (m_bestId == ~Index(0) || !(d > Real(0))) return {};
+    return {d, (m_p - m_closest) / d};
+  }
+
+ private:
+  const std::vector<Vec3>& m_x;
+  const std::vector<Triangle>& m_triangles;
+  Vec3 m_p;
+  Real m_best;
+  Index m_bestId = ~Index(0);
+  Vec3 m_closest = Vec3::Zero();
+};
+
+// The nearest wall triangle to p of the candidates of one cell of the grid, from the entries'
+// own box copies: the box distances of a cell's candidates in one vectorised pass over
+// contiguous arrays, then the triangle with the nearest box, then every candidate whose box is not
+// farther than the best so far. The minimum (ties to the lowest id) is the same as over all
+// candidates: the boxes only order and prune.
+WallProximity nearestInCell(const WallTriangleGrid& grid, const std::vector<Vec3>& x,
+                            const std::vector<Triangle>& triangles, std::size_t cell, const Vec3& p) {
+  const CellGrid& g = grid.grid();
+  const Index begin = g.begin(cell);
+  const std::size_t n = g.end(cell) - begin;
+  thread_local std::vector<Real> boxDistances;
+  boxDistances.resize(n);
+  {
+    const Real *lx = grid.entryLo(0) + begin, *ly = grid.entryLo(1) + begin, *lz = grid.entryLo(2) + begin;
+    const Real *hx = grid.entryHi(0) + begin, *hy = grid.entryHi(1) + begin, *hz = grid.entryHi(2) + begin;
+    const Real px = p.x(), py = p.y(), pz = p.z();
+    Real* d = boxDistances.data();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Real dx = px - std::min(std::max(px, lx[k]), hx[k]);
+      const Real dy = py - std::min(std::max(py, ly[k]), hy[k]);
+      const Real dz = pz - std::min(std::max(pz, lz[k]), hz[k]);
+      d[k] = dx * dx + dy * dy + dz * dz;
+    }
+  }
+  const Real reach = grid.reach();
+  std::size_t first = n;
+  Real firstBox = reach * reach;
+  for (std::size_t k = 0; k < n; ++k)
+    if (boxDistances[k] < firstBox) firstBox = boxDistances[k], first = k;
+  if (first == n) return {};
+  NearestTriangle nearest(x, triangles, p, reach);
+  const Index* items = g.items().data() + begin;
+  nearest.offer(items[first]);
+  for (std::size_t k = 0; k < n; ++k)
+    if (k != first && !(boxDistances[k] > nearest.best2())) nearest.offer(items[k]);
+  return nearest.result();
 }
 
 // Cell coordinates along an axis are capped (a grid this large is never built: the cells are
@@ -140,6 +166,16 @@ void WallTriangleGrid::update(const std::vector<Vec3>& vertices, const std::vect
       m_cells.forEachCell(r, [&](std::size_t c, auto, auto, auto) { emit(c); });
   });
   if (!binned) throw std::length_error("findNearestWalls: too many triangle entries for the cell grid");
+  const std::vector<Index>& items = m_grid.items();
+  for (std::size_t a = 0; a < 3; ++a) {
+    m_entryLo[a].resize(items.size());
+    m_entryHi[a].resize(items.size());
+  }
+  for (std::size_t e = 0; e < items.size(); ++e)
+    for (std::size_t a = 0; a < 3; ++a) {
+      m_entryLo[a][e] = m_boxes[items[e]][0][int(a)];
+      m_entryHi[a][e] = m_boxes[items[e]][1][int(a)];
+    }
 }
 
 void findNearestWalls(const WallTriangleGrid& grid, const std::vector<Vec3>& vertices,
@@ -147,7 +183,6 @@ void findNearestWalls(const WallTriangleGrid& grid, const std::vector<Vec3>& ver
                       std::vector<WallProximity>& out, int threads) {
   out.assign(points.size(), WallProximity{});
   if (!grid.valid()) return;
-  const Real reach = grid.reach();
   const auto n = std::ptrdiff_t(points.size());
 #pragma omp parallel for schedule(dynamic, 64) num_threads(threads) if (n >= 256)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
@@ -155,9 +190,7 @@ void findNearestWalls(const WallTriangleGrid& grid, const std::vector<Vec3>& ver
     std::size_t cell = 0;
     // Outside the grid (or not finite): farther than reach from every triangle's box.
     if (!p.allFinite() || !grid.cells().cellOf(p, cell)) continue;
-    const CellGrid& g = grid.grid();
-    const std::span<const Index> candidates(g.items().data() + g.begin(cell), g.end(cell) - g.begin(cell));
-    out[std::size_t(i)] = nearestOf(vertices, triangles, candidates, p, reach, &grid.boxes());
+    out[std::size_t(i)] = nearestInCell(grid, vertices, triangles, cell, p);
   }
 }
 
@@ -170,9 +203,9 @@ void findNearestWalls(const std::vector<Vec3>& vertices, const std::vector<Trian
 
 WallProximity nearestWallBruteForce(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles,
                                     const Vec3& point, Real reach) {
-  std::vector<Index> all(triangles.size());
-  for (std::size_t t = 0; t < all.size(); ++t) all[t] = Index(t);
-  return nearestOf(vertices, triangles, all, point, reach);
+  NearestTriangle nearest(vertices, triangles, point, reach);
+  for (std::size_t t = 0; t < triangles.size(); ++t) nearest.offer(Index(t));
+  return nearest.result();
 }
 
 }  // namespace hs::pbd

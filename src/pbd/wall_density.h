@@ -60,11 +60,16 @@ class WallTriangleGrid {
   [[nodiscard]] const CellIndexing& cells() const { return m_cells; }
   [[nodiscard]] const CellGrid& grid() const { return m_grid; }
   [[nodiscard]] const std::vector<std::array<Vec3, 2>>& boxes() const { return m_boxes; }
+  // Per grid entry (in the grid's entry order), coordinate `axis` of its triangle's box corners:
+  // a cell's candidates' boxes as contiguous arrays, read by a loop the compiler vectorises.
+  [[nodiscard]] const Real* entryLo(int axis) const { return m_entryLo[std::size_t(axis)].data(); }
+  [[nodiscard]] const Real* entryHi(int axis) const { return m_entryHi[std::size_t(axis)].data(); }
 
  private:
   CellIndexing m_cells;
   CellGrid m_grid;
   std::vector<std::array<Vec3, 2>> m_boxes;  // each triangle's box
+  std::array<std::vector<Real>, 3> m_entryLo, m_entryHi;
   Real m_reach = 0;
   bool m_valid = false;
 };
