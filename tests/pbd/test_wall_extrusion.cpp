@@ -1,0 +1,158 @@
+// The surface-to-wall mesher: prism cuts, conformity, no inverted tets, thickness from a
+// second surface, boundary loops, remeshing to a target edge length.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "pbd/surface_remesh.h"
+#include "pbd/wall_extrusion.h"
+#include "sphere_surface.h"
+
+namespace hs::pbd {
+namespace {
+
+using testing::cupTriangles;
+using testing::makeSphere;
+
+double sixVolume(const std::vector<Vec3>& x, const Tet& t) {
+  return 6.0 * double(signedTetVolume(x[t[0]], x[t[1]], x[t[2]], x[t[3]]));
+}
+
+TEST(SplitPrism, EveryIdOrderGivesThreePositiveTetsFillingThePrism) {
+  // The unit prism (0,0,0), (1,0,0), (0,1,0) lifted by z = 1; corner ids permuted in all 6 ways
+  // (the winding is the corners', the ids only decide the cut).
+  const std::array<Vec3, 3> corner = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+  std::array<Index, 3> ids = {0, 1, 2};
+  do {
+    std::vector<Vec3> x(6);
+    for (int k = 0; k < 3; ++k) {
+      x[ids[k]] = corner[k];
+      x[ids[k] + 3] = corner[k] + Vec3(0, 0, 1);
+    }
+    double total = 0;
+    for (const Tet& t : splitPrism({ids[0], ids[1], ids[2]}, 3)) {
+      EXPECT_NEAR(sixVolume(x, t), 1.0, 1e-6);
+      total += sixVolume(x, t);
+    }
+    EXPECT_NEAR(total / 6.0, 0.5, 1e-6);
+  } while (std::next_permutation(ids.begin(), ids.end()));
+}
+
+TEST(ExtrudeWall, ClosedSphereShellConformsAndHasTheShellVolume) {
+  const auto sphere = makeSphere(3, 1.0);
+  ExtrusionSettings settings;
+  settings.layers = 3;
+  const ExtrudedWall wall = extrudeWall(sphere.vertices, sphere.triangles, std::vector<double>(sphere.vertices.size(), 0.3), settings);
+  ASSERT_EQ(wall.mesh.tets.size(), 3 * 3 * sphere.triangles.size());
+  // Conforming: the only faces used by one tet are the inner and outer spheres. A cut that
+  // differed between two prisms would leave their shared side as two pairs of lone faces.
+  EXPECT_EQ(boundaryFaces(wall.mesh.tets).size(), 2 * sphere.triangles.size());
+  const MeshQuality q = measureQuality(wall.mesh);
+  EXPECT_EQ(q.invertedTets, 0u);
+  EXPECT_GT(q.minVolume, 0);
+  double volume = 0;
+  for (const Tet& t : wall.mesh.tets) volume += sixVolume(wall.mesh.vertices, t) / 6.0;
+  // A polyhedral shell of inscribed spheres: within 3% of (4/3) pi (1.3^3 - 1).
+  EXPECT_NEAR(volume, 4.0 / 3.0 * std::numbers::pi * (1.3 * 1.3 * 1.3 - 1.0), 0.03 * 4.0 / 3.0 * std::numbers::pi * 1.197);
+  EXPECT_EQ(wall.shrunkVertices, 0);
+}
+
+TEST(ExtrudeWall, OffsetInwardPastTheCentreShrinksInsteadOfInverting) {
+  // Reversed triangles face into the sphere: a 1.5 thick wall inward from radius 1 would cross
+  // itself at the centre.
+  auto sphere = makeSphere(2, 1.0);
+  for (Triangle& t : sphere.triangles) std::swap(t[1], t[2]);
+  const ExtrudedWall wall = extrudeWall(sphere.vertices, sphere.triangles, std::vector<double>(sphere.vertices.size(), 1.5), {});
+  EXPECT_GT(wall.shrunkVertices, 0);
+  EXPECT_EQ(measureQuality(wall.mesh).invertedTets, 0u);
+  for (double t : wall.thickness) EXPECT_LT(t, 1.0);
+}
+
+TEST(ExtrudeWall, ThicknessToAnOuterSphereIsTheGap) {
+  const auto inner = makeSphere(2, 1.0), outer = makeSphere(4, 1.5);
+  const auto n = smoothNormals(vertexNormals(inner.vertices, inner.triangles), inner.triangles, 2);
+  const std::vector<double> t = thicknessToSurface(inner.vertices, n, outer.vertices, outer.triangles);
+  // The polyhedral outer sphere lies within 1 - cos(edge angle / 2) of radius 1.5.
+  for (double ti : t) EXPECT_NEAR(ti, 0.5, 0.01);
+}
+
+TEST(ClosestPointOnTriangle, AgreesWithDenseSampling) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-2, 2);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Vec3d a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng)), c(u(rng), u(rng), u(rng)), p(u(rng), u(rng), u(rng));
+    const double exact = (closestPointOnTriangle(p, a, b, c) - p).norm();
+    double sampled = 1e300;
+    const int n = 120;
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j)
+        sampled = std::min(sampled, (a + (b - a) * (double(i) / n) + (c - a) * (double(j) / n) - p).norm());
+    EXPECT_LE(exact, sampled + 1e-12);
+    EXPECT_GE(exact, sampled - 0.05 * (b - a).norm() - 0.05 * (c - a).norm());
+  }
+}
+
+TEST(BoundaryLoops, CupHasOneLoopSphereNone) {
+  const auto sphere = makeSphere(3, 1.0);
+  EXPECT_TRUE(boundaryLoopVertices(sphere.triangles).empty());
+  const auto cup = cupTriangles(sphere, 0.3);
+  const auto loops = boundaryLoopVertices(cup);
+  ASSERT_EQ(loops.size(), 1u);
+  // Each loop edge is one triangle's edge, traversed a -> b by it.
+  for (std::size_t k = 0; k < loops[0].size(); ++k) {
+    const Index a = loops[0][k], b = loops[0][(k + 1) % loops[0].size()];
+    int uses = 0;
+    for (const Triangle& t : cup)
+      for (int e = 0; e < 3; ++e) uses += t[e] == a && t[(e + 1) % 3] == b;
+    EXPECT_EQ(uses, 1);
+  }
+  // A cup facing out of what it holds: positive capped volume; reversed, negative.
+  auto reversed = cup;
+  for (Triangle& t : reversed) std::swap(t[1], t[2]);
+  EXPECT_GT(cappedSignedVolume(sphere.vertices, cup), 0);
+  EXPECT_LT(cappedSignedVolume(sphere.vertices, reversed), 0);
+}
+
+TEST(RemeshIsotropic, SphereReachesTheTargetEdgeAndStaysOnTheSurface) {
+  const auto sphere = makeSphere(4, 1.0);  // mean edge ~0.08
+  for (double target : {0.25, 0.04}) {
+    const RemeshedSurface r = remeshIsotropic(sphere.vertices, sphere.triangles, {target, 6});
+    const EdgeLengthStats st = edgeLengthStats(r.vertices, r.triangles);
+    EXPECT_GT(st.mean, 0.8 * target) << target;
+    EXPECT_LT(st.mean, 1.33 * target) << target;
+    // Relaxation after the last split may stretch a few edges past 4/3 L.
+    EXPECT_LT(st.longest, 1.5 * target) << target;
+    const SurfaceCheck check = checkSurface(r.triangles);
+    EXPECT_TRUE(check.closed && check.consistentlyOriented) << target;
+    // Vertices on the input polyhedron, which lies within 0.4% of the unit sphere.
+    for (const Vec3& p : r.vertices) EXPECT_NEAR(p.cast<double>().norm(), 1.0, 0.006) << target;
+    EXPECT_GT(enclosedVolume(r.vertices, r.triangles), 0);
+  }
+}
+
+TEST(RemeshIsotropic, CupKeepsItsLoopOnTheRim) {
+  const auto sphere = makeSphere(4, 1.0);
+  const auto cup = extractSubSurface(sphere.vertices, sphere.triangles, [&] {
+    std::vector<Index> ids;
+    const auto kept = cupTriangles(sphere, 0.3);
+    for (Index f = 0; f < sphere.triangles.size(); ++f)
+      if (std::find(kept.begin(), kept.end(), sphere.triangles[f]) != kept.end()) ids.push_back(f);
+    return ids;
+  }());
+  const RemeshedSurface r = remeshIsotropic(cup.vertices, cup.triangles, {0.15, 6});
+  const auto loops = boundaryLoopVertices(r.triangles);
+  ASSERT_EQ(loops.size(), 1u);
+  const double zRimMax = 0.35;
+  for (Index v : loops[0]) {
+    EXPECT_GT(r.vertices[v].z(), 0.1);
+    EXPECT_LT(r.vertices[v].z(), zRimMax);
+  }
+  EXPECT_EQ(checkSurface(r.triangles).nonManifoldEdges, 0u);
+  EXPECT_GT(cappedSignedVolume(r.vertices, r.triangles), 0);
+}
+
+}  // namespace
+}  // namespace hs::pbd
