@@ -174,4 +174,55 @@ double cappedSignedVolume(const std::vector<Vec3>& vertices, const std::vector<T
   return volume / 6.0;
 }
 
+std::vector<Index> largestFlatRegion(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles,
+                                     double angleDeg, double planeTolerance, double* area) {
+  // Triangles across each edge.
+  std::map<std::pair<Index, Index>, std::vector<Index>> byEdge;
+  for (Index f = 0; f < triangles.size(); ++f)
+    for (std::size_t k = 0; k < 3; ++k) {
+      const Index a = triangles[f][k], b = triangles[f][(k + 1) % 3];
+      byEdge[{std::min(a, b), std::max(a, b)}].push_back(f);
+    }
+  std::vector<Vec3d> normal(triangles.size());
+  std::vector<double> triArea(triangles.size());
+  for (Index f = 0; f < triangles.size(); ++f) {
+    const Vec3d a = at(vertices, triangles[f][0]);
+    const Vec3d n = (at(vertices, triangles[f][1]) - a).cross(at(vertices, triangles[f][2]) - a);
+    triArea[f] = 0.5 * n.norm();
+    normal[f] = n.norm() > 0 ? Vec3d(n.normalized()) : Vec3d::Zero();
+  }
+  const double cosLimit = std::cos(angleDeg * 3.14159265358979323846 / 180.0);
+  std::vector<bool> taken(triangles.size(), false);
+  std::vector<Index> best;
+  double bestArea = 0;
+  for (Index seed = 0; seed < triangles.size(); ++seed) {
+    if (taken[seed] || triArea[seed] == 0) continue;
+    const Vec3d n = normal[seed], p0 = at(vertices, triangles[seed][0]);
+    std::vector<Index> region{seed}, stack{seed};
+    taken[seed] = true;
+    double regionArea = triArea[seed];
+    while (!stack.empty()) {
+      const Index f = stack.back();
+      stack.pop_back();
+      for (std::size_t k = 0; k < 3; ++k) {
+        const Index a = triangles[f][k], b = triangles[f][(k + 1) % 3];
+        for (Index g : byEdge[{std::min(a, b), std::max(a, b)}]) {
+          if (taken[g] || normal[g].dot(n) < cosLimit) continue;
+          bool onPlane = true;
+          for (Index v : triangles[g]) onPlane = onPlane && std::abs((at(vertices, v) - p0).dot(n)) <= planeTolerance;
+          if (!onPlane) continue;
+          taken[g] = true;
+          region.push_back(g);
+          stack.push_back(g);
+          regionArea += triArea[g];
+        }
+      }
+    }
+    if (regionArea > bestArea) bestArea = regionArea, best = std::move(region);
+  }
+  std::sort(best.begin(), best.end());
+  if (area) *area = bestArea;
+  return best;
+}
+
 }  // namespace hs::pbd

@@ -238,10 +238,36 @@ struct ReferenceSurface {
   }
 };
 
-void relaxTangentially(EditableSurface& s, const ReferenceSurface& reference) {
+// The input's boundary edges, for sliding loop vertices along their loop.
+struct ReferenceBoundary {
+  std::vector<std::array<Vec3d, 2>> edges;
+
+  Vec3d closestPoint(const Vec3d& p) const {
+    double best = std::numeric_limits<double>::infinity();
+    Vec3d bestPoint = p;
+    for (const auto& [a, b] : edges) {
+      const Vec3d ab = b - a;
+      const double s = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+      const Vec3d q = a + s * ab;
+      if ((q - p).norm() < best) best = (q - p).norm(), bestPoint = q;
+    }
+    return bestPoint;
+  }
+};
+
+void relaxTangentially(EditableSurface& s, const ReferenceSurface& reference, const ReferenceBoundary& boundary) {
   std::vector<Vec3d> next = s.m_pos;
   for (Index v = 0; v < s.m_pos.size(); ++v) {
-    if (s.m_vertDead[v] || s.onBoundary(v)) continue;
+    if (s.m_vertDead[v]) continue;
+    if (s.onBoundary(v)) {
+      // Along the loop: toward the midpoint of its two loop neighbours, back onto the input's
+      // loop, so that the loop's edges even out while it keeps its shape.
+      std::vector<Index> along;
+      for (Index w : s.neighbours(v))
+        if (s.trianglesOfEdge(v, w).size() == 1) along.push_back(w);
+      if (along.size() == 2) next[v] = boundary.closestPoint(0.5 * (s.m_pos[along[0]] + s.m_pos[along[1]]));
+      continue;
+    }
     const std::vector<Index> nb = s.neighbours(v);
     if (nb.empty()) continue;
     Vec3d centroid = Vec3d::Zero();
@@ -271,13 +297,17 @@ RemeshedSurface remeshIsotropic(const std::vector<Vec3>& vertices, const std::ve
     reference.centre.push_back(centre);
     reference.radius.push_back(std::max({(c[0] - centre).norm(), (c[1] - centre).norm(), (c[2] - centre).norm()}));
   }
+  ReferenceBoundary boundary;
+  for (const std::vector<Index>& loop : boundaryLoopVertices(triangles))
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      boundary.edges.push_back({vertices[loop[k]].cast<double>(), vertices[loop[(k + 1) % loop.size()]].cast<double>()});
   EditableSurface s(vertices, triangles);
   const double high = 4.0 / 3.0 * settings.targetEdge, low = 4.0 / 5.0 * settings.targetEdge;
   for (int it = 0; it < settings.iterations; ++it) {
     splitLongEdges(s, high);
     collapseShortEdges(s, low, high);
     flipEdges(s);
-    relaxTangentially(s, reference);
+    relaxTangentially(s, reference, boundary);
   }
   // Compact: alive vertices in their order, alive triangles in theirs.
   RemeshedSurface out;

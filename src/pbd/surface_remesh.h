@@ -24,7 +24,8 @@ struct RemeshedSurface {
 // vertices); flip edges that bring the valences closer to 6 (4 on the boundary); move each
 // interior vertex toward the centroid of its neighbours in its tangent plane and back onto
 // the input surface (its closest point). Boundary loops are kept: their vertices are split and
-// collapsed only along the loop and never relaxed, so the loops keep their shape and count.
+// collapsed only along the loop and relaxed only along it (toward the midpoint of their two
+// loop neighbours, back onto the input's loop), so the loops keep their shape and count.
 // Orientation is kept. Deterministic. Throws std::invalid_argument if targetEdge <= 0.
 RemeshedSurface remeshIsotropic(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles,
                                 const RemeshSettings& settings);

@@ -67,7 +67,87 @@ std::vector<Index> buildLayers(const std::vector<Vec3>& vertices, const std::vec
   return bad;
 }
 
+// Smallest dihedral angle of a tet, as the cosine's arc of its outward face normals (the same
+// measure as measureQuality); -1 for a non-positive tet.
+double minDihedral(const std::array<Vec3d, 4>& x) {
+  if (!((x[1] - x[0]).cross(x[2] - x[0]).dot(x[3] - x[0]) > 0)) return -1;
+  const std::array<Vec3d, 4> n = {(x[2] - x[1]).cross(x[3] - x[1]).normalized(), (x[3] - x[0]).cross(x[2] - x[0]).normalized(),
+                                  (x[1] - x[0]).cross(x[3] - x[0]).normalized(), (x[2] - x[0]).cross(x[1] - x[0]).normalized()};
+  double worst = 4;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) worst = std::min(worst, 3.141592653589793 - std::acos(std::clamp(n[i].dot(n[j]), -1.0, 1.0)));
+  return worst;
+}
+
+// Smart Laplacian smoothing (Freitag & Ollivier-Gooch 1997, "Tetrahedral mesh improvement
+// using swapping and smoothing", IJNME 40) of the offset layers: each vertex above the surface
+// moves halfway toward the mean of its neighbours in the same layer, across its offset
+// direction only (its layer's distance from the surface is kept), and only when the worst
+// dihedral angle of its tets grows. The surface itself (layer 0) is never moved.
+void smoothLayers(TetMesh& mesh, std::size_t n, const std::vector<std::vector<Index>>& neighbours,
+                  const std::vector<Vec3d>& directions, int sweeps) {
+  std::vector<std::vector<Index>> tetsAt(mesh.vertices.size());
+  for (Index t = 0; t < mesh.tets.size(); ++t)
+    for (Index v : mesh.tets[t]) tetsAt[v].push_back(t);
+  const auto worstAround = [&](Index v) {
+    double worst = 4;
+    for (Index t : tetsAt[v]) {
+      std::array<Vec3d, 4> x;
+      for (int k = 0; k < 4; ++k) x[k] = mesh.vertices[mesh.tets[t][k]].cast<double>();
+      worst = std::min(worst, minDihedral(x));
+    }
+    return worst;
+  };
+  for (int sweep = 0; sweep < sweeps; ++sweep)
+    for (std::size_t v = n; v < mesh.vertices.size(); ++v) {
+      const std::size_t i = v % n, layerStart = v - i;
+      if (neighbours[i].empty()) continue;
+      Vec3d mean = Vec3d::Zero();
+      for (Index j : neighbours[i]) mean += mesh.vertices[layerStart + j].cast<double>() / double(neighbours[i].size());
+      const Vec3d p = mesh.vertices[v].cast<double>(), d = directions[i];
+      const Vec3d move = 0.5 * ((mean - p) - d * d.dot(mean - p));
+      const double before = worstAround(static_cast<Index>(v));
+      mesh.vertices[v] = (p + move).cast<Real>();
+      if (!(worstAround(static_cast<Index>(v)) > before)) mesh.vertices[v] = p.cast<Real>();
+    }
+}
+
 }  // namespace
+
+std::vector<Vec3d> offsetDirections(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles,
+                                    const ExtrusionSettings& settings) {
+  const std::vector<Vec3d> raw = vertexNormals(vertices, triangles);
+  std::vector<Vec3d> d = smoothNormals(raw, triangles, settings.normalSmoothing);
+  // Smoothing turns a direction away from the faces at a crease; a prism over a face its
+  // direction runs nearly along is a sliver. Each direction is turned back toward the face it
+  // sees worst until it sees every face at its vertex at least at minFaceCosine (or gives up
+  // after 20 steps: a vertex whose faces open wider than that cannot see them all).
+  std::vector<std::vector<Vec3d>> faceNormals(vertices.size());
+  for (const Triangle& t : triangles) {
+    const Vec3d a = vertices[t[0]].cast<double>();
+    const Vec3d n = (vertices[t[1]].cast<double>() - a).cross(vertices[t[2]].cast<double>() - a);
+    if (n.norm() == 0) continue;
+    for (Index i : t) faceNormals[i].push_back(n.normalized());
+  }
+  const auto worstCosine = [&](std::size_t i, const Vec3d& direction) {
+    double worst = 1;
+    for (const Vec3d& n : faceNormals[i]) worst = std::min(worst, n.dot(direction));
+    return worst;
+  };
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    // Smoothing that went too far (a small closed surface averages to nothing) and now sees a
+    // face from behind: start again from the unsmoothed normal where that sees the faces better.
+    if (worstCosine(i, d[i]) < 0 && worstCosine(i, raw[i]) > worstCosine(i, d[i])) d[i] = raw[i];
+    for (int step = 0; step < 20 && !faceNormals[i].empty(); ++step) {
+      const Vec3d* worst = &faceNormals[i][0];
+      for (const Vec3d& n : faceNormals[i])
+        if (n.dot(d[i]) < worst->dot(d[i])) worst = &n;
+      if (worst->dot(d[i]) >= settings.minFaceCosine) break;
+      d[i] = (d[i] + 0.25 * *worst).normalized();
+    }
+  }
+  return d;
+}
 
 ExtrudedWall extrudeWall(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles,
                          const std::vector<double>& thickness, const ExtrusionSettings& settings) {
@@ -78,8 +158,9 @@ ExtrudedWall extrudeWall(const std::vector<Vec3>& vertices, const std::vector<Tr
   ExtrudedWall wall;
   wall.surfaceVertices = vertices.size();
   wall.thickness = thickness;
-  wall.directions = smoothNormals(vertexNormals(vertices, triangles), triangles, settings.normalSmoothing);
+  wall.directions = offsetDirections(vertices, triangles, settings);
   std::vector<bool> shrunk(vertices.size(), false);
+  const std::vector<std::vector<Index>> neighbours = vertexNeighbours(vertices.size(), triangles);
   for (int round = 0;; ++round) {
     const std::vector<Index> bad = buildLayers(vertices, triangles, wall.thickness, wall.directions, settings, wall.mesh);
     if (bad.empty()) break;
@@ -88,7 +169,21 @@ ExtrudedWall extrudeWall(const std::vector<Vec3>& vertices, const std::vector<Tr
                                " surface vertices still have inverted or flat tets after shrinking the wall " +
                                std::to_string(round) + " times");
     for (Index v : bad) wall.thickness[v] *= settings.shrink, shrunk[v] = true;
+    // Thickness that steps from one vertex to the next skews the prisms between them: the
+    // neighbours give way too, t_i <- min(t_i, (t_i + mean_(j ~ i) t_j) / 2), twice.
+    for (int pass = 0; pass < 2; ++pass) {
+      std::vector<double> next = wall.thickness;
+      for (std::size_t i = 0; i < next.size(); ++i) {
+        if (neighbours[i].empty()) continue;
+        double mean = 0;
+        for (Index j : neighbours[i]) mean += wall.thickness[j] / double(neighbours[i].size());
+        next[i] = std::min(next[i], 0.5 * (wall.thickness[i] + mean));
+      }
+      wall.thickness = std::move(next);
+    }
   }
+  smoothLayers(wall.mesh, vertices.size(), neighbours, wall.directions, settings.smoothingSweeps);
+  for (std::size_t i = 0; i < shrunk.size(); ++i) shrunk[i] = shrunk[i] || wall.thickness[i] < thickness[i];
   wall.shrunkVertices = static_cast<int>(std::count(shrunk.begin(), shrunk.end(), true));
   const auto offset = static_cast<Index>(settings.layers * vertices.size());
   wall.innerSurface = triangles;

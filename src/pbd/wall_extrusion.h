@@ -17,6 +17,9 @@ namespace hs::pbd {
 struct ExtrusionSettings {
   int layers = 2;               // prisms across the wall
   int normalSmoothing = 10;     // smoothNormals iterations for the offset directions
+  // Each offset direction is turned toward the faces at its vertex until d . n_f >= this for
+  // every one of them (cos 60 degrees): a prism's side never lies along its direction.
+  double minFaceCosine = 0.5;
   // If a tet comes out inverted or flat, or an edge turned (minEdgeScale), the thickness at its surface vertices is scaled by
   // `shrink` and the wall rebuilt, up to `maxShrinkRounds` times (where the surface is curved
   // more sharply than the wall is thick, offsets along the normals would cross).
@@ -27,6 +30,9 @@ struct ExtrusionSettings {
   // An outermost-layer edge must keep this share of its length along its surface direction
   // (e_outer . e_0 > minEdgeScale |e_0|^2): no edge turns round or shrinks to nothing.
   double minEdgeScale = 0.2;
+  // Sweeps of smart Laplacian smoothing of the layers above the surface (wall_extrusion.cpp:
+  // a vertex moves across its offset direction only when its worst tet gets better).
+  int smoothingSweeps = 3;
 };
 
 struct ExtrudedWall {
@@ -40,10 +46,16 @@ struct ExtrudedWall {
 
 // Offsets surface vertex i to x_i + (k / layers) t_i d_i for k = 0..layers, where d_i is its
 // smoothed normal (the side the triangles face: (b - a) x (c - a)) and t_i = thickness[i];
-// cuts each prism by the rule above. Every tet is positive (checked: std::runtime_error if
+// cuts each prism by the rule above; then smooths the layers above the surface (smoothingSweeps).
+// Every tet is positive (checked: std::runtime_error if
 // shrinking could not make it so). Throws std::invalid_argument for sizes that do not match.
 ExtrudedWall extrudeWall(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles,
                          const std::vector<double>& thickness, const ExtrusionSettings& settings);
+
+// The offset directions extrudeWall uses: smoothed vertex normals, each turned toward the faces
+// at its vertex that it sees at a grazing angle (settings.minFaceCosine).
+std::vector<Vec3d> offsetDirections(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles,
+                                    const ExtrusionSettings& settings);
 
 // The three tets of the prism (a, b, c) below (a', b', c') = (a + n, b + n, c + n), with
 // (b - a) x (c - a) pointing toward the primed layer, positively oriented, cut by the

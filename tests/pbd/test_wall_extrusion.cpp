@@ -8,6 +8,7 @@
 #include <random>
 
 #include "pbd/surface_remesh.h"
+#include "pbd/planar_cap.h"
 #include "pbd/wall_extrusion.h"
 #include "sphere_surface.h"
 
@@ -152,6 +153,105 @@ TEST(RemeshIsotropic, CupKeepsItsLoopOnTheRim) {
   }
   EXPECT_EQ(checkSurface(r.triangles).nonManifoldEdges, 0u);
   EXPECT_GT(cappedSignedVolume(r.vertices, r.triangles), 0);
+}
+
+}  // namespace
+}  // namespace hs::pbd
+
+namespace hs::pbd {
+namespace {
+
+TEST(OffsetDirections, SeeEveryFaceAtTheirVertexWithinSixtyDegrees) {
+  // A cube's corners: three faces at right angles; their smoothed normals lie along the
+  // diagonal, which sees each face at 54.7 degrees.
+  const std::vector<Vec3> v = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0),
+                               Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(1, 1, 1), Vec3(0, 1, 1)};
+  const std::vector<Triangle> t = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                                   {2, 3, 7}, {2, 7, 6}, {1, 2, 6}, {1, 6, 5}, {0, 4, 7}, {0, 7, 3}};
+  ExtrusionSettings settings;
+  settings.normalSmoothing = 30;  // smoothing alone would pull the directions around
+  const auto d = offsetDirections(v, t, settings);
+  for (const Triangle& f : t) {
+    const Vec3d n = (v[f[1]] - v[f[0]]).cast<double>().cross((v[f[2]] - v[f[0]]).cast<double>()).normalized();
+    for (Index i : f) EXPECT_GE(n.dot(d[i]), settings.minFaceCosine - 1e-9);
+  }
+}
+
+TEST(ExtrudeWall, LayerSmoothingMovesAcrossTheDirectionsOnlyAndNeverWorsens) {
+  // An ellipsoid: layers over a surface of varying curvature.
+  auto s = makeSphere(2, 1.0);
+  for (Vec3& p : s.vertices) p.z() *= Real(2.5);
+  ExtrusionSettings smooth, raw;
+  smooth.layers = raw.layers = 3;
+  raw.smoothingSweeps = 0;
+  const std::vector<double> t(s.vertices.size(), 0.4);
+  const ExtrudedWall a = extrudeWall(s.vertices, s.triangles, t, smooth);
+  const ExtrudedWall b = extrudeWall(s.vertices, s.triangles, t, raw);
+  ASSERT_EQ(a.mesh.vertices.size(), b.mesh.vertices.size());
+  const std::size_t n = s.vertices.size();
+  for (std::size_t v = 0; v < a.mesh.vertices.size(); ++v) {
+    const std::size_t i = v % n, layer = v / n;
+    const double along = (a.mesh.vertices[v] - s.vertices[i]).cast<double>().dot(a.directions[i]);
+    EXPECT_NEAR(along, a.thickness[i] * double(layer) / 3.0, 1e-5) << v;
+  }
+  EXPECT_GE(measureQuality(a.mesh).minDihedralDeg, measureQuality(b.mesh).minDihedralDeg);
+  EXPECT_EQ(measureQuality(a.mesh).invertedTets, 0u);
+}
+
+TEST(LargestFlatRegion, FindsTheFlatCapOfAClosedCup) {
+  // The lower hemisphere closed at z = 0 by a fan from the centre: the fan is the flat face.
+  const auto sphere = makeSphere(3, 1.0);
+  auto cup = cupTriangles(sphere, 0.0);
+  std::vector<Vec3> v = sphere.vertices;
+  v.emplace_back(0, 0, 0);
+  const auto centre = static_cast<Index>(v.size() - 1);
+  const auto loops = boundaryLoopVertices(cup);
+  ASSERT_EQ(loops.size(), 1u);
+  const std::size_t cupSize = cup.size();
+  for (std::size_t k = 0; k < loops[0].size(); ++k) cup.push_back({centre, loops[0][(k + 1) % loops[0].size()], loops[0][k]});
+  double area = 0;
+  const auto flat = largestFlatRegion(v, cup, 2.0, 1e-6, &area);
+  ASSERT_EQ(flat.size(), loops[0].size());
+  for (Index f : flat) EXPECT_GE(f, cupSize);
+  EXPECT_NEAR(area, std::numbers::pi, 0.1);  // the inscribed 32-gon of the unit circle
+}
+
+TEST(CapWithHoles, CoversTheRimMinusTheHolesAndJoinsTheRim) {
+  // A 48-gon of radius 1 with holes of radius 0.35 and 0.25.
+  std::vector<Eigen::Vector2d> rim;
+  std::vector<Index> ids;
+  for (int k = 0; k < 48; ++k) {
+    const double phi = 2 * std::numbers::pi * k / 48;
+    rim.emplace_back(std::cos(phi), std::sin(phi));
+    ids.push_back(static_cast<Index>(k));
+  }
+  const std::vector<CircularHole> holes = {{{-0.4, 0}, 0.35}, {{0.5, 0}, 0.25}};
+  const PlanarCap cap = capWithHoles(rim, ids, 48, holes, 0.12);
+  std::vector<Eigen::Vector2d> all = rim;
+  all.insert(all.end(), cap.newPoints.begin(), cap.newPoints.end());
+  double area = 0;
+  for (const Triangle& t : cap.triangles) {
+    const Eigen::Vector2d e1 = all[t[1]] - all[t[0]], e2 = all[t[2]] - all[t[0]];
+    const double a = 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
+    EXPECT_GT(a, 0);  // counter-clockwise
+    area += a;
+  }
+  // Polygons inscribed in the circles: the 48-gon's area less the hole rings' polygons.
+  const auto polygonArea = [](double r, int n) { return 0.5 * n * r * r * std::sin(2 * std::numbers::pi / n); };
+  const double expected = polygonArea(1, 48) - polygonArea(0.35, static_cast<int>(cap.holeRings[0].size())) -
+                          polygonArea(0.25, static_cast<int>(cap.holeRings[1].size()));
+  EXPECT_NEAR(area, expected, 1e-9);
+  // Boundary loops: the rim and the two rings, nothing else.
+  const auto loops = boundaryLoopVertices(cap.triangles);
+  ASSERT_EQ(loops.size(), 3u);
+  std::vector<std::size_t> sizes;
+  for (const auto& l : loops) sizes.push_back(l.size());
+  std::sort(sizes.begin(), sizes.end());
+  std::vector<std::size_t> expectedSizes = {cap.holeRings[0].size(), cap.holeRings[1].size(), 48};
+  std::sort(expectedSizes.begin(), expectedSizes.end());
+  EXPECT_EQ(sizes, expectedSizes);
+  EXPECT_THROW(capWithHoles(rim, ids, 48, {{{0.0, 0}, 0.99}}, 0.12), std::invalid_argument);
+  EXPECT_THROW(capWithHoles(rim, ids, 48, {{{-0.2, 0}, 0.3}, {{0.2, 0}, 0.3}}, 0.12), std::invalid_argument);
 }
 
 }  // namespace
