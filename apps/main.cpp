@@ -155,6 +155,7 @@ void addMeshCommand(CLI::App& app, Commands& c) {
   meshApp->add_option("--septum", c.mesh.septum, "Direction toward the septum in the file's frame: x,y,z");
   meshApp->add_option("--mitral-loop", c.mesh.mitralLoop, "Boundary loop number of the mitral annulus (default: the larger)");
   meshApp->add_option("--aortic-loop", c.mesh.aorticLoop, "Boundary loop number of the aortic annulus");
+  meshApp->add_option("--epicardium", c.mesh.epicardium, "An epicardial surface file for --wall");
 }
 
 std::string joinedNames(const std::vector<CLI::App*>& subcommands) {

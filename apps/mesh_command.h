@@ -20,6 +20,7 @@ struct MeshOptions {
   std::string resolution = "default";
   std::string septum;       // "x,y,z" in the file's frame; empty: from the annuli
   int mitralLoop = 0, aorticLoop = 0;
+  std::string epicardium;   // a second surface file; empty: the file's EPI marker, if any
 };
 
 int meshCommand(const MeshOptions& options);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -67,10 +68,15 @@ WallReport buildWallReport(const io::ImportedMesh& mesh, const io::MeshSummary& 
   s.mitralLoop = options.mitralLoop;
   s.aorticLoop = options.aorticLoop;
   const io::PatientSurfaces surfaces = io::patientSurfaces(mesh, file);
-  r.fromEpicardium = surfaces.epicardium.has_value();
+  std::optional<cardiac::Surface> epicardium = surfaces.epicardium;
+  if (!options.epicardium.empty()) {
+    const io::ImportedMesh epiMesh = io::readMesh(options.epicardium);
+    epicardium = cardiac::Surface{epiMesh.vertices, epiMesh.triangles};
+  }
   const auto start = std::chrono::steady_clock::now();
-  r.wall = cardiac::buildPatientWall(surfaces.endocardium, surfaces.epicardium ? &*surfaces.epicardium : nullptr, s);
+  r.wall = cardiac::buildPatientWall(surfaces.endocardium, epicardium ? &*epicardium : nullptr, s);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.fromEpicardium = r.wall.thicknessFromEpicardium;
   return r;
 }
 
@@ -92,7 +98,7 @@ void printWall(const WallReport& r) {
             << " mL with the annuli closed flat\n"
             << "    long axis (file frame, base-ward) (" << w.frame.rotation(1, 0) << ", " << w.frame.rotation(1, 1) << ", "
             << w.frame.rotation(1, 2) << "), septum toward (" << -w.frame.rotation(0, 0) << ", " << -w.frame.rotation(0, 1)
-            << ", " << -w.frame.rotation(0, 2) << ")\n"
+            << ", " << -w.frame.rotation(0, 2) << ") from the " << w.septumFrom << '\n'
             << "    built in " << std::setprecision(3) << r.seconds << " s\n";
 }
 
@@ -117,6 +123,7 @@ nlohmann::json wallJson(const WallReport& r) {
   const Eigen::Matrix3d& R = w.frame.rotation;
   j["long_axis"] = {R(1, 0), R(1, 1), R(1, 2)};
   j["septum"] = {-R(0, 0), -R(0, 1), -R(0, 2)};
+  j["septum_from"] = w.septumFrom;
   j["seconds"] = r.seconds;
   return j;
 }

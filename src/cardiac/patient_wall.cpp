@@ -1,6 +1,7 @@
 #include "cardiac/patient_wall.h"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -19,6 +20,11 @@ namespace {
 constexpr double kSmallestHeart = 0.03, kLargestHeart = 0.30;
 // The base plate is thinner than the wall, as in the procedural heart (0.3 of 0.5).
 constexpr double kBaseThicknessShare = 0.6;
+// From the mitral-to-aortic direction to the septum's: the aortic root lies at the
+// anteroseptal position, between AHA segments 1 and 2 (Cerqueira et al. 2002). On biv-me's
+// patient 1 the septum so found lies 11 degrees from the one its biventricular epicardium
+// gives (56 without the turn; tests/io/test_patient_meshes.cpp).
+constexpr double kAorticToSeptumRad = 45.0 * 3.14159265358979323846 / 180.0;
 
 std::string format(double v) {
   std::ostringstream s;
@@ -68,17 +74,21 @@ std::pair<std::size_t, std::size_t> chooseAnnuli(const std::vector<detail::LoopS
   return {mitral, aortic};
 }
 
-HeartFrame findFrame(const Surface& s, const Vec3d& baseCentre, const Vec3d& septumHint, double metresPerUnit,
-                     const std::string& file) {
+// The long axis, unit, from the apex (the point farthest from the base along the principal
+// axis of the vertices) to the base centre.
+Vec3d longAxis(const Surface& s, const Vec3d& baseCentre) {
   Vec3d mean = Vec3d::Zero();
   for (const Vec3& p : s.vertices) mean += p.cast<double>() / double(s.vertices.size());
   Vec3d principal = principalAxis(s.vertices);
   if ((baseCentre - mean).dot(principal) < 0) principal = -principal;
-  // The apex: the point farthest from the base along the principal axis.
   Vec3d apex = s.vertices[0].cast<double>();
   for (const Vec3& p : s.vertices)
     if ((p.cast<double>() - baseCentre).dot(principal) < (apex - baseCentre).dot(principal)) apex = p.cast<double>();
-  const Vec3d y = (baseCentre - apex).normalized();
+  return (baseCentre - apex).normalized();
+}
+
+HeartFrame frameOf(const Vec3d& y, const Vec3d& baseCentre, const Vec3d& septumHint, double metresPerUnit,
+                   const std::string& file) {
   const Vec3d septum = septumHint - y * y.dot(septumHint);
   if (septumHint.norm() == 0 || septum.norm() < 1e-6 * septumHint.norm())
     fail(file, "the septum direction lies along the long axis; expected one across it");
@@ -90,6 +100,34 @@ HeartFrame findFrame(const Surface& s, const Vec3d& baseCentre, const Vec3d& sep
   f.origin = baseCentre;
   f.metresPerUnit = metresPerUnit;
   return f;
+}
+
+Vec3d areaCentroid(const Surface& s) {
+  Vec3d sum = Vec3d::Zero();
+  double area = 0;
+  for (const pbd::Triangle& t : s.triangles) {
+    const Vec3d a = s.vertices[t[0]].cast<double>(), b = s.vertices[t[1]].cast<double>(), c = s.vertices[t[2]].cast<double>();
+    const double w = 0.5 * (b - a).cross(c - a).norm();
+    sum += w * (a + b + c) / 3.0;
+    area += w;
+  }
+  return area > 0 ? Vec3d(sum / area) : sum;
+}
+
+// An epicardium around both ventricles (biv-me's) is centred well off the left ventricle's
+// long axis, toward the right ventricle: the septum's side. Its offset across the axis, or
+// zero for an epicardium of the left ventricle alone (offset below 0.3 of the cavity's mean
+// radius).
+Vec3d rightVentricleSide(const Surface& endo, const Surface& epi, const Vec3d& y) {
+  const Vec3d c = areaCentroid(endo);
+  double radius = 0;
+  for (const Vec3& p : endo.vertices) {
+    const Vec3d d = p.cast<double>() - c;
+    radius += (d - y * y.dot(d)).norm() / double(endo.vertices.size());
+  }
+  const Vec3d offset = areaCentroid(epi) - c;
+  const Vec3d across = offset - y * y.dot(offset);
+  return across.norm() > 0.3 * radius ? across : Vec3d::Zero();
 }
 
 // A closed surface keeps a truncated ventricle's base as its largest flat face: cut it off.
@@ -169,9 +207,22 @@ PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardi
       if (std::abs(axis[k]) < std::abs(axis[across])) across = k;
     septumHint = Vec3d::Unit(across);
   }
-  if (settings.septum) septumHint = *settings.septum;
+  const Vec3d y = longAxis(s, baseCentre);
+  if (loops.size() == 2) {
+    // The aortic root sits anteroseptally, not mid-septum: its centre is taken 45 degrees
+    // anterior of the septum (about the long axis, anterior -> septal is a turn about -y).
+    septumHint = Eigen::AngleAxisd(-kAorticToSeptumRad, y) * septumHint;
+  }
   PatientWall wall;
-  wall.frame = findFrame(s, baseCentre, septumHint, metresPerUnit, file);
+  wall.septumFrom = loops.size() == 2 ? "aortic annulus" : "file axis";
+  bool biventricularEpicardium = false;
+  if (epicardium) {
+    const Vec3d rv = rightVentricleSide(s, inMetres(*epicardium, metresPerUnit), y);
+    biventricularEpicardium = rv.norm() > 0;
+    if (biventricularEpicardium) septumHint = rv, wall.septumFrom = "right ventricle";
+  }
+  if (settings.septum) septumHint = *settings.septum, wall.septumFrom = "setting";
+  wall.frame = frameOf(y, baseCentre, septumHint, metresPerUnit, file);
   for (Vec3& p : s.vertices) p = (wall.frame.rotation * (p.cast<double>() - wall.frame.origin)).cast<pbd::Real>();
   std::vector<Vec3d> annulusCentres;
   if (loops.size() == 2)
@@ -204,7 +255,8 @@ PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardi
   pbd::ExtrusionSettings extrusion;
   extrusion.layers = settings.resolution.layers;
   std::vector<double> thickness(surface.vertices.size(), settings.wallThickness);
-  if (epicardium) {
+  wall.thicknessFromEpicardium = epicardium && !biventricularEpicardium;
+  if (wall.thicknessFromEpicardium) {
     Surface epi = inMetres(*epicardium, metresPerUnit);
     for (Vec3& p : epi.vertices) p = (wall.frame.rotation * (p.cast<double>() - wall.frame.origin)).cast<pbd::Real>();
     thickness = pbd::thicknessToSurface(surface.vertices, pbd::offsetDirections(surface.vertices, surface.triangles, extrusion),

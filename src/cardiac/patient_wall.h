@@ -11,12 +11,16 @@
 //  3. loops: 2 are the annuli (the mitral the larger cap, or as overridden); 1 is the rim of a
 //     truncated ventricle, whose base is closed flat with the two orifices cut in it, placed
 //     and sized as in the procedural heart (mitral toward -x, aortic toward +x);
-//  4. frame (heartFrame): the long axis from the apex (the vertex farthest from the base along
-//     the principal axis) to the base centre; the septum from the settings or, between two
-//     annuli, the side of the aortic annulus (the aortic root lies between the mitral annulus
-//     and the septum);
+//  4. frame: the long axis from the apex (the vertex farthest from the base along the principal
+//     axis) to the base centre; the septum from the settings, else from the right ventricle
+//     when the epicardium encloses both ventricles (its centroid lies off the left ventricle's
+//     axis, toward the right ventricle), else between two annuli from the mitral-to-aortic
+//     direction turned 45 degrees about the long axis (the aortic root lies anteroseptally,
+//     between the mitral annulus and the septum, anterior of mid-septum), else (a truncated,
+//     axisymmetric ventricle) the file axis most across the long axis;
 //  5. the surface remeshed to the edge length (pbd::remeshIsotropic) and extruded in layers
-//     (pbd::extrudeWall) by the thickness or up to the epicardium.
+//     (pbd::extrudeWall) by the thickness or up to an epicardium of the left ventricle alone
+//     (through a biventricular one the rays would cross the right ventricle's cavity).
 #include <optional>
 #include <string>
 #include <vector>
@@ -83,6 +87,9 @@ struct PatientWall {
   double cavityVolume = 0;                   // m^3, the annuli closed by flat caps
   pbd::MeshQuality quality;
   int shrunkVertices = 0;                    // where the thickness had to give way
+  // "setting", "right ventricle" (a biventricular epicardium), "aortic annulus" or "file axis".
+  std::string septumFrom;
+  bool thicknessFromEpicardium = false;      // false: the settings' wallThickness
   std::vector<std::uint8_t> segment;         // per vertex: AHA 1..17, 0 on the base plate
 };
 
@@ -90,5 +97,13 @@ struct PatientWall {
 // that cannot make one (size for the units, no or too many boundary loops, a base that is not
 // flat, annulus overrides out of range).
 PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardium, const PatientWallSettings& settings);
+
+// The regions' landmarks back in the file's frame and units: the apex (the endocardial point
+// lowest along the long axis), the base centre (on the base plane, y = 0), the long axis (unit,
+// base-ward; the base plane's normal) and the septum's direction (unit, across the axis).
+struct VentricleLandmarks {
+  Vec3d apex, baseCentre, longAxis, septum;
+};
+VentricleLandmarks landmarksInFile(const PatientWall& wall);
 
 }  // namespace hs::cardiac

@@ -52,8 +52,11 @@ TEST(PatientWall, TwoAnnuliAreFoundBySizeAndTheSeptumIsOnTheAorticSide) {
   const PatientWall w = buildPatientWall(inScannerFrame(twoAnnuliVentricle()), nullptr, mmSettings());
   EXPECT_FALSE(w.baseOpened);
   EXPECT_GT(w.mitralRing.size(), w.aorticRing.size());
-  // The aortic orifice was at the cup's +x: that is the septum, placed at -x.
-  EXPECT_NEAR(w.frame.rotation.row(0).dot(scannerRotation() * Vec3d::UnitX()), -1.0, 1e-3);
+  // The aortic orifice was at the cup's +x: the septum lies 45 degrees on from it, turning
+  // about the long axis (the cup's +y) the way that takes anterior to septal (about -y).
+  const Vec3d septum = scannerRotation() * (Eigen::AngleAxisd(-std::numbers::pi / 4, Vec3d::UnitY()) * Vec3d::UnitX());
+  EXPECT_NEAR(w.frame.rotation.row(0).dot(septum), -1.0, 1e-3);
+  EXPECT_EQ(w.septumFrom, "aortic annulus");
   EXPECT_LT(ringCentre(w, w.aorticRing).x(), 0);
   EXPECT_GT(ringCentre(w, w.mitralRing).x(), 0);
   EXPECT_NEAR(w.frame.rotation.row(1).dot(scannerRotation() * Vec3d::UnitY()), 1.0, 1e-2);
