@@ -52,7 +52,11 @@ WallReport buildWallReport(const io::ImportedMesh& mesh, const io::MeshSummary& 
   const std::string unit = options.units.empty() ? summary.unitGuess : options.units;
   if (unit == "mm") s.units = cardiac::LengthUnit::Millimetre;
   else if (unit == "m") s.units = cardiac::LengthUnit::Metre;
-  else if (options.units.empty()) bad(file, "cannot guess the units from the size " + std::to_string(summary.size) + "; expected --units mm or --units m");
+  else if (options.units.empty()) {
+    std::ostringstream size;
+    size << summary.size;
+    bad(file, "cannot guess the units from the size " + size.str() + "; expected --units mm or --units m");
+  }
   else bad(file, "--units '" + options.units + "': expected mm or m");
   if (!options.thickness.empty()) {
     s.wallThickness = parseNumber(options.thickness, file, "--thickness: expected a wall thickness in m, e.g. 0.010");
