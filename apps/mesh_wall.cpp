@@ -13,7 +13,9 @@
 namespace hs::app {
 namespace {
 
-[[noreturn]] void bad(const std::string& file, const std::string& what) { throw std::invalid_argument(file + ": " + what); }
+[[noreturn]] void bad(const std::string& file, const std::string& what) {
+  throw std::invalid_argument(file + ": " + what);
+}
 
 double parseNumber(const std::string& text, const std::string& file, const std::string& what) {
   std::size_t used = 0;
@@ -36,7 +38,8 @@ Eigen::Vector3d parseDirection(const std::string& text, const std::string& file)
     if (k == 3) bad(file, "--septum '" + text + "': expected three numbers x,y,z");
     d[k++] = parseNumber(part, file, "--septum '" + text + "': expected three numbers x,y,z");
   }
-  if (k != 3 || d.norm() == 0) bad(file, "--septum '" + text + "': expected three numbers x,y,z, not all zero");
+  if (k != 3 || d.norm() == 0)
+    bad(file, "--septum '" + text + "': expected three numbers x,y,z, not all zero");
   return d;
 }
 
@@ -44,22 +47,26 @@ double mm(double metres) { return metres * 1e3; }
 
 }  // namespace
 
-WallReport buildWallReport(const io::ImportedMesh& mesh, const io::MeshSummary& summary, const MeshOptions& options) {
+WallReport buildWallReport(const io::ImportedMesh& mesh, const io::MeshSummary& summary,
+                           const MeshOptions& options) {
   const std::string& file = options.file;
   WallReport r;
   cardiac::PatientWallSettings& s = r.settings;
   s.file = file;
   const std::string unit = options.units.empty() ? summary.unitGuess : options.units;
-  if (unit == "mm") s.units = cardiac::LengthUnit::Millimetre;
-  else if (unit == "m") s.units = cardiac::LengthUnit::Metre;
+  if (unit == "mm")
+    s.units = cardiac::LengthUnit::Millimetre;
+  else if (unit == "m")
+    s.units = cardiac::LengthUnit::Metre;
   else if (options.units.empty()) {
     std::ostringstream size;
     size << summary.size;
     bad(file, "cannot guess the units from the size " + size.str() + "; expected --units mm or --units m");
-  }
-  else bad(file, "--units '" + options.units + "': expected mm or m");
+  } else
+    bad(file, "--units '" + options.units + "': expected mm or m");
   if (!options.thickness.empty()) {
-    s.wallThickness = parseNumber(options.thickness, file, "--thickness: expected a wall thickness in m, e.g. 0.010");
+    s.wallThickness =
+        parseNumber(options.thickness, file, "--thickness: expected a wall thickness in m, e.g. 0.010");
     if (!(s.wallThickness >= 0.002 && s.wallThickness <= 0.03))
       bad(file, "--thickness " + options.thickness + ": expected a wall thickness in m within [0.002, 0.03]");
   }
@@ -87,22 +94,26 @@ WallReport buildWallReport(const io::ImportedMesh& mesh, const io::MeshSummary& 
 void printWall(const WallReport& r) {
   const cardiac::PatientWall& w = r.wall;
   const cardiac::WallResolution& res = r.settings.resolution;
-  std::cout << std::setprecision(6) << "  wall: " << mm(res.edgeLength) << " mm edges, " << res.layers << " layer"
-            << (res.layers == 1 ? "" : "s") << ", "
-            << (r.fromEpicardium ? std::string("up to the epicardium") : "thickness " + std::to_string(mm(r.settings.wallThickness)) + " mm")
+  std::cout << std::setprecision(6) << "  wall: " << mm(res.edgeLength) << " mm edges, " << res.layers
+            << " layer" << (res.layers == 1 ? "" : "s") << ", "
+            << (r.fromEpicardium ? std::string("up to the epicardium")
+                                 : "thickness " + std::to_string(mm(r.settings.wallThickness)) + " mm")
             << '\n'
-            << "    vertices " << w.mesh.vertices.size() << " (endocardium " << w.endoVertices << "), tetrahedra "
-            << w.mesh.tets.size() << '\n'
-            << "    worst tetrahedron: smallest dihedral angle " << w.quality.minDihedralDeg << " deg, largest aspect ratio "
-            << w.quality.maxAspectRatio << ", inverted " << w.quality.invertedTets << '\n';
-  if (w.shrunkVertices > 0) std::cout << "    thinner at " << w.shrunkVertices << " vertices (the wall would have crossed itself)\n";
-  std::cout << "    annuli: " << (w.baseOpened ? "opened in the flat base: " : "") << "mitral " << w.mitralRing.size()
-            << " vertices, aortic " << w.aorticRing.size() << " vertices\n"
-            << "    cavity: length " << mm(w.cavityLength) << " mm (base plane to apex), volume " << w.cavityVolume * 1e6
-            << " mL with the annuli closed flat\n"
-            << "    long axis (file frame, base-ward) (" << w.frame.rotation(1, 0) << ", " << w.frame.rotation(1, 1) << ", "
-            << w.frame.rotation(1, 2) << "), septum toward (" << -w.frame.rotation(0, 0) << ", " << -w.frame.rotation(0, 1)
-            << ", " << -w.frame.rotation(0, 2) << ") from the " << w.septumFrom << '\n'
+            << "    vertices " << w.mesh.vertices.size() << " (endocardium " << w.endoVertices
+            << "), tetrahedra " << w.mesh.tets.size() << '\n'
+            << "    worst tetrahedron: smallest dihedral angle " << w.quality.minDihedralDeg
+            << " deg, largest aspect ratio " << w.quality.maxAspectRatio << ", inverted "
+            << w.quality.invertedTets << '\n';
+  if (w.shrunkVertices > 0)
+    std::cout << "    thinner at " << w.shrunkVertices << " vertices (the wall would have crossed itself)\n";
+  std::cout << "    annuli: " << (w.baseOpened ? "opened in the flat base: " : "") << "mitral "
+            << w.mitralRing.size() << " vertices, aortic " << w.aorticRing.size() << " vertices\n"
+            << "    cavity: length " << mm(w.cavityLength) << " mm (base plane to apex), volume "
+            << w.cavityVolume * 1e6 << " mL with the annuli closed flat\n"
+            << "    long axis (file frame, base-ward) (" << w.frame.rotation(1, 0) << ", "
+            << w.frame.rotation(1, 1) << ", " << w.frame.rotation(1, 2) << "), septum toward ("
+            << -w.frame.rotation(0, 0) << ", " << -w.frame.rotation(0, 1) << ", " << -w.frame.rotation(0, 2)
+            << ") from the " << w.septumFrom << '\n'
             << "    built in " << std::setprecision(3) << r.seconds << " s\n";
 }
 

@@ -20,7 +20,8 @@ struct WallReport {
 
 // Throws std::invalid_argument (one line naming the file) for bad options or a surface that
 // makes no wall.
-WallReport buildWallReport(const io::ImportedMesh& mesh, const io::MeshSummary& summary, const MeshOptions& options);
+WallReport buildWallReport(const io::ImportedMesh& mesh, const io::MeshSummary& summary,
+                           const MeshOptions& options);
 void printWall(const WallReport& report);
 nlohmann::json wallJson(const WallReport& report);
 

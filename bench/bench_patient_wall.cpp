@@ -23,7 +23,8 @@ void buildFrom(benchmark::State& state, const std::string& file, cardiac::Length
   double minDihedral = 0, maxAspect = 0;
   for (auto _ : state) {
     const PatientSurfaces s = patientSurfaces(readMesh(file), file);
-    const cardiac::PatientWall w = cardiac::buildPatientWall(s.endocardium, s.epicardium ? &*s.epicardium : nullptr, settings);
+    const cardiac::PatientWall w =
+        cardiac::buildPatientWall(s.endocardium, s.epicardium ? &*s.epicardium : nullptr, settings);
     tets = w.mesh.tets.size();
     minDihedral = w.quality.minDihedralDeg;
     maxAspect = w.quality.maxAspectRatio;

@@ -16,7 +16,8 @@ LoopShape loopShape(const std::vector<Vec3>& vertices, const std::vector<Index>&
   for (Index i : loop) s.centroid += vertices[i].cast<double>();
   s.centroid /= double(loop.size());
   for (std::size_t k = 0; k < loop.size(); ++k)
-    s.vectorArea += 0.5 * (vertices[loop[k]].cast<double>() - s.centroid).cross(vertices[loop[(k + 1) % loop.size()]].cast<double>() - s.centroid);
+    s.vectorArea += 0.5 * (vertices[loop[k]].cast<double>() - s.centroid)
+                              .cross(vertices[loop[(k + 1) % loop.size()]].cast<double>() - s.centroid);
   return s;
 }
 
@@ -29,7 +30,8 @@ OrificeLayout proceduralOrificeLayout() {
   return {-1.0 + gap + rm, rm, 1.0 - gap - ra, ra};
 }
 
-OpenedBase openFlatBase(const Surface& cup, const std::vector<Index>& rim, double spacing, const std::string& file) {
+OpenedBase openFlatBase(const Surface& cup, const std::vector<Index>& rim, double spacing,
+                        const std::string& file) {
   const LoopShape shape = loopShape(cup.vertices, rim);
   Vec3d n = shape.vectorArea.normalized();
   if (n.y() < 0) n = -n;  // out of the cavity: up, toward the base

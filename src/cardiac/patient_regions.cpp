@@ -21,12 +21,15 @@ namespace hs::cardiac {
 
 VentricleLandmarks landmarksInFile(const PatientWall& wall) {
   const HeartFrame& f = wall.frame;
-  const auto toFile = [&](const Vec3d& heart) { Vec3d p = (f.rotation.transpose() * heart + f.origin) / f.metresPerUnit; return p; };
+  const auto toFile = [&](const Vec3d& heart) {
+    Vec3d p = (f.rotation.transpose() * heart + f.origin) / f.metresPerUnit;
+    return p;
+  };
   std::size_t apex = 0;
   for (std::size_t i = 0; i < wall.endoVertices; ++i)
     if (wall.mesh.vertices[i].y() < wall.mesh.vertices[apex].y()) apex = i;
-  return {toFile(wall.mesh.vertices[apex].cast<double>()), toFile(Vec3d::Zero()), f.rotation.row(1).transpose(),
-          -f.rotation.row(0).transpose()};
+  return {toFile(wall.mesh.vertices[apex].cast<double>()), toFile(Vec3d::Zero()),
+          f.rotation.row(1).transpose(), -f.rotation.row(0).transpose()};
 }
 
 }  // namespace hs::cardiac

@@ -33,7 +33,9 @@ std::string format(double v) {
   return s.str();
 }
 
-[[noreturn]] void fail(const std::string& file, const std::string& what) { throw std::invalid_argument(file + ": " + what); }
+[[noreturn]] void fail(const std::string& file, const std::string& what) {
+  throw std::invalid_argument(file + ": " + what);
+}
 
 Surface inMetres(const Surface& s, double metresPerUnit) {
   Surface out = s;
@@ -57,7 +59,8 @@ Vec3d principalAxis(const std::vector<Vec3>& vertices) {
 }
 
 // The annuli's loop numbers (0-based) by size or as overridden.
-std::pair<std::size_t, std::size_t> chooseAnnuli(const std::vector<detail::LoopShape>& shapes, const PatientWallSettings& s) {
+std::pair<std::size_t, std::size_t> chooseAnnuli(const std::vector<detail::LoopShape>& shapes,
+                                                 const PatientWallSettings& s) {
   const auto checkNumber = [&](int number, const char* key) {
     if (number < 0 || number > static_cast<int>(shapes.size()))
       fail(s.file, std::string(key) + " " + std::to_string(number) + ": expected a loop number in [1, " +
@@ -68,9 +71,11 @@ std::pair<std::size_t, std::size_t> chooseAnnuli(const std::vector<detail::LoopS
   const std::size_t larger = shapes[0].vectorArea.norm() >= shapes[1].vectorArea.norm() ? 0 : 1;
   std::size_t mitral = larger, aortic = 1 - larger;
   if (s.mitralLoop > 0) mitral = static_cast<std::size_t>(s.mitralLoop - 1), aortic = 1 - mitral;
-  if (s.aorticLoop > 0) aortic = static_cast<std::size_t>(s.aorticLoop - 1), mitral = s.mitralLoop > 0 ? mitral : 1 - aortic;
+  if (s.aorticLoop > 0)
+    aortic = static_cast<std::size_t>(s.aorticLoop - 1), mitral = s.mitralLoop > 0 ? mitral : 1 - aortic;
   if (mitral == aortic)
-    fail(s.file, "mitral loop and aortic loop are both loop " + std::to_string(mitral + 1) + "; expected two different loops");
+    fail(s.file, "mitral loop and aortic loop are both loop " + std::to_string(mitral + 1) +
+                     "; expected two different loops");
   return {mitral, aortic};
 }
 
@@ -83,7 +88,8 @@ Vec3d longAxis(const Surface& s, const Vec3d& baseCentre) {
   if ((baseCentre - mean).dot(principal) < 0) principal = -principal;
   Vec3d apex = s.vertices[0].cast<double>();
   for (const Vec3& p : s.vertices)
-    if ((p.cast<double>() - baseCentre).dot(principal) < (apex - baseCentre).dot(principal)) apex = p.cast<double>();
+    if ((p.cast<double>() - baseCentre).dot(principal) < (apex - baseCentre).dot(principal))
+      apex = p.cast<double>();
   return (baseCentre - apex).normalized();
 }
 
@@ -106,7 +112,8 @@ Vec3d areaCentroid(const Surface& s) {
   Vec3d sum = Vec3d::Zero();
   double area = 0;
   for (const pbd::Triangle& t : s.triangles) {
-    const Vec3d a = s.vertices[t[0]].cast<double>(), b = s.vertices[t[1]].cast<double>(), c = s.vertices[t[2]].cast<double>();
+    const Vec3d a = s.vertices[t[0]].cast<double>(), b = s.vertices[t[1]].cast<double>(),
+                c = s.vertices[t[2]].cast<double>();
     const double w = 0.5 * (b - a).cross(c - a).norm();
     sum += w * (a + b + c) / 3.0;
     area += w;
@@ -133,11 +140,17 @@ Vec3d rightVentricleSide(const Surface& endo, const Surface& epi, const Vec3d& y
 // A closed surface keeps a truncated ventricle's base as its largest flat face: cut it off.
 Surface withoutFlatBase(const Surface& s, const std::string& file) {
   double flatArea = 0, totalArea = 0;
-  const std::vector<Index> flat = pbd::largestFlatRegion(s.vertices, s.triangles, 2.0, 1e-3 * largestExtent(s.vertices), &flatArea);
+  const std::vector<Index> flat =
+      pbd::largestFlatRegion(s.vertices, s.triangles, 2.0, 1e-3 * largestExtent(s.vertices), &flatArea);
   for (const pbd::Triangle& t : s.triangles)
-    totalArea += 0.5 * (s.vertices[t[1]] - s.vertices[t[0]]).cast<double>().cross((s.vertices[t[2]] - s.vertices[t[0]]).cast<double>()).norm();
+    totalArea += 0.5 * (s.vertices[t[1]] - s.vertices[t[0]])
+                           .cast<double>()
+                           .cross((s.vertices[t[2]] - s.vertices[t[0]]).cast<double>())
+                           .norm();
   if (flatArea < 0.02 * totalArea)
-    fail(file, "a closed surface without a flat base; expected boundary loops at the mitral and aortic annuli or a flat truncated base");
+    fail(file,
+         "a closed surface without a flat base; expected boundary loops at the mitral and aortic annuli or a "
+         "flat truncated base");
   std::vector<Index> rest;
   for (Index f = 0; f < s.triangles.size(); ++f)
     if (!std::binary_search(flat.begin(), flat.end(), f)) rest.push_back(f);
@@ -157,8 +170,8 @@ void checkHeartSize(double extent, LengthUnit unit, const std::string& file) {
   const double otherMetres = extent * metresPer(other);
   std::string hint = "; check the file's units";
   if (otherMetres >= kSmallestHeart && otherMetres <= kLargestHeart)
-    hint = "; is the file in " + std::string(unitName(other)) + "? (units = \"" + unitName(other) + "\" makes it " +
-           format(otherMetres * 100) + " cm)";
+    hint = "; is the file in " + std::string(unitName(other)) + "? (units = \"" + unitName(other) +
+           "\" makes it " + format(otherMetres * 100) + " cm)";
   fail(file, "a heart " + format(extent) + " " + unitName(unit) + " across (" + format(metres * 100) +
                  " cm) is implausible; expected 3-30 cm" + hint);
 }
@@ -170,7 +183,8 @@ WallResolution wallResolution(const std::string& name) {
   throw std::invalid_argument("resolution '" + name + "': expected coarse, default or fine");
 }
 
-PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardium, const PatientWallSettings& settings) {
+PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardium,
+                             const PatientWallSettings& settings) {
   const std::string& file = settings.file;
   if (endocardium.triangles.empty()) fail(file, "no triangles; expected an endocardial surface");
   checkHeartSize(largestExtent(endocardium.vertices), settings.units, file);
@@ -182,7 +196,8 @@ PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardi
     loops = pbd::boundaryLoopVertices(s.triangles);
   }
   if (loops.size() > 2)
-    fail(file, std::to_string(loops.size()) + " boundary loops; expected 2 (the mitral and aortic annuli) or 1 (a flat truncated base)");
+    fail(file, std::to_string(loops.size()) +
+                   " boundary loops; expected 2 (the mitral and aortic annuli) or 1 (a flat truncated base)");
   if (pbd::cappedSignedVolume(s.vertices, s.triangles) < 0)
     for (pbd::Triangle& t : s.triangles) std::swap(t[1], t[2]);  // face out of the cavity
   std::vector<detail::LoopShape> shapes;
@@ -223,13 +238,16 @@ PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardi
   }
   if (settings.septum) septumHint = *settings.septum, wall.septumFrom = "setting";
   wall.frame = frameOf(y, baseCentre, septumHint, metresPerUnit, file);
-  for (Vec3& p : s.vertices) p = (wall.frame.rotation * (p.cast<double>() - wall.frame.origin)).cast<pbd::Real>();
+  for (Vec3& p : s.vertices)
+    p = (wall.frame.rotation * (p.cast<double>() - wall.frame.origin)).cast<pbd::Real>();
   std::vector<Vec3d> annulusCentres;
   if (loops.size() == 2)
-    for (std::size_t k : {mitral, aortic}) annulusCentres.push_back(wall.frame.rotation * (shapes[k].centroid - wall.frame.origin));
+    for (std::size_t k : {mitral, aortic})
+      annulusCentres.push_back(wall.frame.rotation * (shapes[k].centroid - wall.frame.origin));
 
   // Resolution.
-  const pbd::RemeshedSurface remeshed = pbd::remeshIsotropic(s.vertices, s.triangles, {settings.resolution.edgeLength, 6});
+  const pbd::RemeshedSurface remeshed =
+      pbd::remeshIsotropic(s.vertices, s.triangles, {settings.resolution.edgeLength, 6});
   Surface surface{remeshed.vertices, remeshed.triangles};
   std::vector<bool> basePlate(surface.vertices.size(), false);
   loops = pbd::boundaryLoopVertices(surface.triangles);
@@ -247,8 +265,9 @@ PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardi
     wall.mitralRing = loops[firstIsMitral ? 0 : 1];
     wall.aorticRing = loops[firstIsMitral ? 1 : 0];
   } else {
-    fail(file, "remeshing to " + format(settings.resolution.edgeLength * 1e3) + " mm changed the boundary loops to " +
-                   std::to_string(loops.size()) + "; expected a finer resolution");
+    fail(file, "remeshing to " + format(settings.resolution.edgeLength * 1e3) +
+                   " mm changed the boundary loops to " + std::to_string(loops.size()) +
+                   "; expected a finer resolution");
   }
 
   // Thickness and extrusion.
@@ -258,8 +277,10 @@ PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardi
   wall.thicknessFromEpicardium = epicardium && !biventricularEpicardium;
   if (wall.thicknessFromEpicardium) {
     Surface epi = inMetres(*epicardium, metresPerUnit);
-    for (Vec3& p : epi.vertices) p = (wall.frame.rotation * (p.cast<double>() - wall.frame.origin)).cast<pbd::Real>();
-    thickness = pbd::thicknessToSurface(surface.vertices, pbd::offsetDirections(surface.vertices, surface.triangles, extrusion),
+    for (Vec3& p : epi.vertices)
+      p = (wall.frame.rotation * (p.cast<double>() - wall.frame.origin)).cast<pbd::Real>();
+    thickness = pbd::thicknessToSurface(surface.vertices,
+                                        pbd::offsetDirections(surface.vertices, surface.triangles, extrusion),
                                         epi.vertices, epi.triangles);
   }
   if (wall.baseOpened) {

@@ -57,14 +57,14 @@ struct WallResolution {
 WallResolution wallResolution(const std::string& name);
 
 struct PatientWallSettings {
-  std::string file;                 // names the input in errors
+  std::string file;  // names the input in errors
   LengthUnit units = LengthUnit::Millimetre;
-  double wallThickness = 0.010;     // m, without an epicardium
+  double wallThickness = 0.010;  // m, without an epicardium
   WallResolution resolution;
   // Loop numbers (1-based, in the order of pbd::boundaryLoopVertices) of the annuli; 0: found
   // by size (the mitral is the larger).
   int mitralLoop = 0, aorticLoop = 0;
-  std::optional<Vec3d> septum;      // direction toward the septum, in the file's frame
+  std::optional<Vec3d> septum;  // direction toward the septum, in the file's frame
 };
 
 // The rigid placement: heart = rotation * (metres * file - origin).
@@ -76,27 +76,28 @@ struct HeartFrame {
 };
 
 struct PatientWall {
-  pbd::TetMesh mesh;                         // metres, heart frame; positive tets
-  std::size_t endoVertices = 0;              // ids [0, n): the endocardium (layer 0)
-  std::vector<pbd::Triangle> endocardium;    // facing out of the cavity (into the wall)
-  std::vector<bool> basePlate;               // per endocardial vertex: on a flat base made here
-  std::vector<Index> mitralRing, aorticRing; // endocardial ids, in loop order
-  bool baseOpened = false;                   // a truncated ventricle whose base was made here
+  pbd::TetMesh mesh;                          // metres, heart frame; positive tets
+  std::size_t endoVertices = 0;               // ids [0, n): the endocardium (layer 0)
+  std::vector<pbd::Triangle> endocardium;     // facing out of the cavity (into the wall)
+  std::vector<bool> basePlate;                // per endocardial vertex: on a flat base made here
+  std::vector<Index> mitralRing, aorticRing;  // endocardial ids, in loop order
+  bool baseOpened = false;                    // a truncated ventricle whose base was made here
   HeartFrame frame;
-  double cavityLength = 0;                   // m, base plane to the endocardial apex
-  double cavityVolume = 0;                   // m^3, the annuli closed by flat caps
+  double cavityLength = 0;  // m, base plane to the endocardial apex
+  double cavityVolume = 0;  // m^3, the annuli closed by flat caps
   pbd::MeshQuality quality;
-  int shrunkVertices = 0;                    // where the thickness had to give way
+  int shrunkVertices = 0;  // where the thickness had to give way
   // "setting", "right ventricle" (a biventricular epicardium), "aortic annulus" or "file axis".
   std::string septumFrom;
-  bool thicknessFromEpicardium = false;      // false: the settings' wallThickness
-  std::vector<std::uint8_t> segment;         // per vertex: AHA 1..17, 0 on the base plate
+  bool thicknessFromEpicardium = false;  // false: the settings' wallThickness
+  std::vector<std::uint8_t> segment;     // per vertex: AHA 1..17, 0 on the base plate
 };
 
 // Builds the wall; throws std::invalid_argument with one line naming settings.file for input
 // that cannot make one (size for the units, no or too many boundary loops, a base that is not
 // flat, annulus overrides out of range).
-PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardium, const PatientWallSettings& settings);
+PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardium,
+                             const PatientWallSettings& settings);
 
 // The regions' landmarks back in the file's frame and units: the apex (the endocardial point
 // lowest along the long axis), the base centre (on the base plane, y = 0), the long axis (unit,

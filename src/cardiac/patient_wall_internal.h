@@ -14,11 +14,12 @@ LoopShape loopShape(const std::vector<Vec3>& vertices, const std::vector<Index>&
 // The base of a truncated ventricle (one boundary loop, the rim, in the heart frame) closed
 // flat with the mitral and aortic orifices cut in it.
 struct OpenedBase {
-  Surface surface;                        // the cup's vertices first, then the plate's
+  Surface surface;  // the cup's vertices first, then the plate's
   std::vector<Index> mitralRing, aorticRing;
-  std::vector<bool> basePlate;            // per vertex
+  std::vector<bool> basePlate;  // per vertex
 };
-OpenedBase openFlatBase(const Surface& cup, const std::vector<Index>& rim, double spacing, const std::string& file);
+OpenedBase openFlatBase(const Surface& cup, const std::vector<Index>& rim, double spacing,
+                        const std::string& file);
 
 // Where the procedural heart puts its orifices in its base plate, as shares of the cavity's
 // radius at the base (LvGeometryParams' defaults): centres on the x axis, radii.

@@ -11,11 +11,13 @@ namespace hs::io {
 namespace {
 
 std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return s;
 }
 
-const SurfaceMarker* findMarker(const ImportedMesh& mesh, const std::string& shortName, const std::string& longName, int number) {
+const SurfaceMarker* findMarker(const ImportedMesh& mesh, const std::string& shortName,
+                                const std::string& longName, int number) {
   for (const SurfaceMarker& m : mesh.markers)
     if (lower(m.name) == shortName || lower(m.name) == longName) return &m;
   for (const SurfaceMarker& m : mesh.markers)
@@ -33,13 +35,15 @@ cardiac::Surface surfaceOf(const ImportedMesh& mesh, const std::vector<pbd::Inde
 PatientSurfaces patientSurfaces(const ImportedMesh& mesh, const std::string& file) {
   PatientSurfaces out;
   if (mesh.tets.empty() && mesh.markers.empty()) {
-    if (mesh.triangles.empty()) throw std::invalid_argument(file + ": no triangles; expected an endocardial surface");
+    if (mesh.triangles.empty())
+      throw std::invalid_argument(file + ": no triangles; expected an endocardial surface");
     out.endocardium = {mesh.vertices, mesh.triangles};
     return out;
   }
   const SurfaceMarker* endo = findMarker(mesh, "endo", "endocardium", 1);
   if (!endo || endo->triangles.empty())
-    throw std::invalid_argument(file + ": no endocardium marker; expected a surface group named ENDO or numbered 1");
+    throw std::invalid_argument(file +
+                                ": no endocardium marker; expected a surface group named ENDO or numbered 1");
   out.endocardium = surfaceOf(mesh, endo->triangles);
   if (const SurfaceMarker* epi = findMarker(mesh, "epi", "epicardium", 2); epi && !epi->triangles.empty())
     out.epicardium = surfaceOf(mesh, epi->triangles);

@@ -24,7 +24,8 @@ double distanceToSegment(const Vec2d& p, const Vec2d& a, const Vec2d& b) {
 
 double distanceToPolygon(const std::vector<Vec2d>& polygon, const Vec2d& p) {
   double d = HUGE_VAL;
-  for (std::size_t k = 0; k < polygon.size(); ++k) d = std::min(d, distanceToSegment(p, polygon[k], polygon[(k + 1) % polygon.size()]));
+  for (std::size_t k = 0; k < polygon.size(); ++k)
+    d = std::min(d, distanceToSegment(p, polygon[k], polygon[(k + 1) % polygon.size()]));
   return d;
 }
 
@@ -35,7 +36,8 @@ bool insidePolygon(const std::vector<Vec2d>& polygon, const Vec2d& p) {
   for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
     const Vec2d& a = polygon[i];
     const Vec2d& b = polygon[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
+    if ((a.y() > p.y()) != (b.y() > p.y()) &&
+        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
       inside = !inside;
   }
   return inside;
@@ -46,11 +48,14 @@ PlanarCap capWithHoles(const std::vector<Vec2d>& rim, const std::vector<Index>& 
   if (rim.size() < 3 || rim.size() != rimIds.size() || !(spacing > 0))
     throw std::invalid_argument("capWithHoles: needs a rim of 3 or more points with ids and spacing > 0");
   for (std::size_t h = 0; h < holes.size(); ++h) {
-    if (!insidePolygon(rim, holes[h].centre) || distanceToPolygon(rim, holes[h].centre) < holes[h].radius + 0.25 * spacing)
-      throw std::invalid_argument("capWithHoles: hole " + std::to_string(h + 1) + " does not fit inside the rim");
+    if (!insidePolygon(rim, holes[h].centre) ||
+        distanceToPolygon(rim, holes[h].centre) < holes[h].radius + 0.25 * spacing)
+      throw std::invalid_argument("capWithHoles: hole " + std::to_string(h + 1) +
+                                  " does not fit inside the rim");
     for (std::size_t g = 0; g < h; ++g)
       if ((holes[h].centre - holes[g].centre).norm() < holes[h].radius + holes[g].radius + 0.25 * spacing)
-        throw std::invalid_argument("capWithHoles: holes " + std::to_string(g + 1) + " and " + std::to_string(h + 1) + " overlap");
+        throw std::invalid_argument("capWithHoles: holes " + std::to_string(g + 1) + " and " +
+                                    std::to_string(h + 1) + " overlap");
   }
   const double keep = kKeepAway * spacing;
   // Points: helpers (hole centres), lattice, rings, rim.

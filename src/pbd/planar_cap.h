@@ -14,9 +14,9 @@ struct CircularHole {
 };
 
 struct PlanarCap {
-  std::vector<Eigen::Vector2d> newPoints;        // ids firstNewId, firstNewId + 1, ...
-  std::vector<Triangle> triangles;               // counter-clockwise in the plane
-  std::vector<std::vector<Index>> holeRings;     // per hole, its ring's ids, counter-clockwise
+  std::vector<Eigen::Vector2d> newPoints;     // ids firstNewId, firstNewId + 1, ...
+  std::vector<Triangle> triangles;            // counter-clockwise in the plane
+  std::vector<std::vector<Index>> holeRings;  // per hole, its ring's ids, counter-clockwise
 };
 
 // Triangulates the polygon `rim` (counter-clockwise, its points carrying the ids `rimIds`)
@@ -26,8 +26,8 @@ struct PlanarCap {
 // and a helper at each hole's centre (Delaunay, then the triangles at the helpers, in a hole
 // or outside the rim are dropped; as the procedural base plate does, cardiac/lv_base_plate).
 // Throws std::invalid_argument when a hole does not fit inside the rim.
-PlanarCap capWithHoles(const std::vector<Eigen::Vector2d>& rim, const std::vector<Index>& rimIds, Index firstNewId,
-                       const std::vector<CircularHole>& holes, double spacing);
+PlanarCap capWithHoles(const std::vector<Eigen::Vector2d>& rim, const std::vector<Index>& rimIds,
+                       Index firstNewId, const std::vector<CircularHole>& holes, double spacing);
 
 // Whether p lies inside the polygon (even-odd crossing rule).
 bool insidePolygon(const std::vector<Eigen::Vector2d>& polygon, const Eigen::Vector2d& p);

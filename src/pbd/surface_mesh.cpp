@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace hs::pbd {
@@ -68,7 +69,8 @@ std::vector<Vec3d> vertexNormals(const std::vector<Vec3>& vertices, const std::v
   return n;
 }
 
-std::vector<std::vector<Index>> vertexNeighbours(std::size_t vertexCount, const std::vector<Triangle>& triangles) {
+std::vector<std::vector<Index>> vertexNeighbours(std::size_t vertexCount,
+                                                 const std::vector<Triangle>& triangles) {
   std::vector<std::vector<Index>> nb(vertexCount);
   for (const Triangle& t : triangles)
     for (std::size_t k = 0; k < 3; ++k) {
@@ -82,7 +84,8 @@ std::vector<std::vector<Index>> vertexNeighbours(std::size_t vertexCount, const 
   return nb;
 }
 
-std::vector<Vec3d> smoothNormals(std::vector<Vec3d> normals, const std::vector<Triangle>& triangles, int iterations) {
+std::vector<Vec3d> smoothNormals(std::vector<Vec3d> normals, const std::vector<Triangle>& triangles,
+                                 int iterations) {
   const auto nb = vertexNeighbours(normals.size(), triangles);
   for (int it = 0; it < iterations; ++it) {
     std::vector<Vec3d> next(normals.size());
@@ -137,8 +140,31 @@ Vec3d closestPointOnTriangle(const Vec3d& p, const Vec3d& a, const Vec3d& b, con
   return a + ab * (vb / denom) + ac * (vc / denom);
 }
 
-std::optional<double> firstRayHit(const Vec3d& origin, const Vec3d& direction, const std::vector<Vec3>& vertices,
-                                  const std::vector<Triangle>& triangles) {
+ClosestPointQuery::ClosestPointQuery(const std::vector<Vec3>& vertices,
+                                     const std::vector<Triangle>& triangles) {
+  for (const Triangle& t : triangles) {
+    const std::array<Vec3d, 3> c{at(vertices, t[0]), at(vertices, t[1]), at(vertices, t[2])};
+    const Vec3d centre = (c[0] + c[1] + c[2]) / 3.0;
+    m_corners.push_back(c);
+    m_centre.push_back(centre);
+    m_radius.push_back(std::max({(c[0] - centre).norm(), (c[1] - centre).norm(), (c[2] - centre).norm()}));
+  }
+}
+
+Vec3d ClosestPointQuery::closestPoint(const Vec3d& p) const {
+  double best = std::numeric_limits<double>::infinity();
+  Vec3d bestPoint = p;
+  for (std::size_t f = 0; f < m_corners.size(); ++f) {
+    if ((p - m_centre[f]).norm() - m_radius[f] >= best) continue;  // every point of f is at least this far
+    const Vec3d q = closestPointOnTriangle(p, m_corners[f][0], m_corners[f][1], m_corners[f][2]);
+    const double d = (q - p).norm();
+    if (d < best) best = d, bestPoint = q;
+  }
+  return bestPoint;
+}
+
+std::optional<double> firstRayHit(const Vec3d& origin, const Vec3d& direction,
+                                  const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles) {
   std::optional<double> best;
   for (const Triangle& t : triangles) {
     const Vec3d a = at(vertices, t[0]);
@@ -174,8 +200,9 @@ double cappedSignedVolume(const std::vector<Vec3>& vertices, const std::vector<T
   return volume / 6.0;
 }
 
-std::vector<Index> largestFlatRegion(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles,
-                                     double angleDeg, double planeTolerance, double* area) {
+std::vector<Index> largestFlatRegion(const std::vector<Vec3>& vertices,
+                                     const std::vector<Triangle>& triangles, double angleDeg,
+                                     double planeTolerance, double* area) {
   // Triangles across each edge.
   std::map<std::pair<Index, Index>, std::vector<Index>> byEdge;
   for (Index f = 0; f < triangles.size(); ++f)
@@ -209,7 +236,8 @@ std::vector<Index> largestFlatRegion(const std::vector<Vec3>& vertices, const st
         for (Index g : byEdge[{std::min(a, b), std::max(a, b)}]) {
           if (taken[g] || normal[g].dot(n) < cosLimit) continue;
           bool onPlane = true;
-          for (Index v : triangles[g]) onPlane = onPlane && std::abs((at(vertices, v) - p0).dot(n)) <= planeTolerance;
+          for (Index v : triangles[g])
+            onPlane = onPlane && std::abs((at(vertices, v) - p0).dot(n)) <= planeTolerance;
           if (!onPlane) continue;
           taken[g] = true;
           region.push_back(g);

@@ -15,7 +15,8 @@ constexpr Index kNone = ~Index(0);
 // triangles around it (alive or dead: filtered on use).
 class EditableSurface {
  public:
-  EditableSurface(const std::vector<Vec3>& v, const std::vector<Triangle>& t) : m_tris(t), m_triDead(t.size(), false) {
+  EditableSurface(const std::vector<Vec3>& v, const std::vector<Triangle>& t)
+      : m_tris(t), m_triDead(t.size(), false) {
     for (const Vec3& p : v) m_pos.push_back(p.cast<double>());
     m_vertDead.assign(v.size(), false);
     m_around.resize(v.size());
@@ -69,7 +70,9 @@ class EditableSurface {
     return e;
   }
   double length(Index a, Index b) const { return (m_pos[a] - m_pos[b]).norm(); }
-  Vec3d normal(const Triangle& t) const { return (m_pos[t[1]] - m_pos[t[0]]).cross(m_pos[t[2]] - m_pos[t[0]]); }
+  Vec3d normal(const Triangle& t) const {
+    return (m_pos[t[1]] - m_pos[t[0]]).cross(m_pos[t[2]] - m_pos[t[0]]);
+  }
 
   static bool contains(const Triangle& t, Index v) { return t[0] == v || t[1] == v || t[2] == v; }
 
@@ -157,9 +160,12 @@ void collapseShortEdges(EditableSurface& s, double minEdge, double maxEdge) {
       s.collapse(b, a, 0.5 * (s.m_pos[a] + s.m_pos[b]), maxEdge);
     } else if (shared.size() == 2) {
       if (ba && bb) continue;  // an interior edge between two loop vertices would pinch the surface
-      if (ba) s.collapse(b, a, s.m_pos[a], maxEdge);
-      else if (bb) s.collapse(a, b, s.m_pos[b], maxEdge);
-      else s.collapse(b, a, 0.5 * (s.m_pos[a] + s.m_pos[b]), maxEdge);
+      if (ba)
+        s.collapse(b, a, s.m_pos[a], maxEdge);
+      else if (bb)
+        s.collapse(a, b, s.m_pos[b], maxEdge);
+      else
+        s.collapse(b, a, 0.5 * (s.m_pos[a] + s.m_pos[b]), maxEdge);
     }
   }
 }
@@ -193,7 +199,9 @@ void flipEdges(EditableSurface& s) {
     };
     const Index c = third(t1, a, b), d = third(t2, a, b);
     if (c == d || !s.trianglesOfEdge(c, d).empty()) continue;
-    const auto dev = [&](Index v, int change) { return std::abs(valence[v] + change - valenceTarget(boundary[v])); };
+    const auto dev = [&](Index v, int change) {
+      return std::abs(valence[v] + change - valenceTarget(boundary[v]));
+    };
     const int before = dev(a, 0) + dev(b, 0) + dev(c, 0) + dev(d, 0);
     const int after = dev(a, -1) + dev(b, -1) + dev(c, 1) + dev(d, 1);
     if (after >= before || valence[a] <= 3 || valence[b] <= 3) continue;
@@ -202,7 +210,8 @@ void flipEdges(EditableSurface& s) {
     const Triangle n1{a, d, c}, n2{d, b, c};
     const Vec3d reference = s.normal(t1).normalized() + s.normal(t2).normalized();
     const Vec3d m1 = s.normal(n1), m2 = s.normal(n2);
-    if (m1.dot(reference) <= 0.5 * m1.norm() * reference.norm() || m2.dot(reference) <= 0.5 * m2.norm() * reference.norm())
+    if (m1.dot(reference) <= 0.5 * m1.norm() * reference.norm() ||
+        m2.dot(reference) <= 0.5 * m2.norm() * reference.norm())
       continue;
     s.m_tris[f1] = n1;
     s.m_tris[f2] = n2;
@@ -216,27 +225,6 @@ void flipEdges(EditableSurface& s) {
     --valence[a], --valence[b], ++valence[c], ++valence[d];
   }
 }
-
-// The input surface, for projecting relaxed vertices back: each triangle with a bounding
-// sphere so that most of them are rejected with one distance.
-struct ReferenceSurface {
-  std::vector<std::array<Vec3d, 3>> corners;
-  std::vector<Vec3d> centre;
-  std::vector<double> radius;
-
-  Vec3d closestPoint(const Vec3d& p) const {
-    double best = std::numeric_limits<double>::infinity();
-    Vec3d bestPoint = p;
-    for (std::size_t f = 0; f < corners.size(); ++f) {
-      const double lower = (p - centre[f]).norm() - radius[f];
-      if (lower >= best) continue;
-      const Vec3d q = closestPointOnTriangle(p, corners[f][0], corners[f][1], corners[f][2]);
-      const double d = (q - p).norm();
-      if (d < best) best = d, bestPoint = q;
-    }
-    return bestPoint;
-  }
-};
 
 // The input's boundary edges, for sliding loop vertices along their loop.
 struct ReferenceBoundary {
@@ -255,7 +243,8 @@ struct ReferenceBoundary {
   }
 };
 
-void relaxTangentially(EditableSurface& s, const ReferenceSurface& reference, const ReferenceBoundary& boundary) {
+void relaxTangentially(EditableSurface& s, const ClosestPointQuery& reference,
+                       const ReferenceBoundary& boundary) {
   std::vector<Vec3d> next = s.m_pos;
   for (Index v = 0; v < s.m_pos.size(); ++v) {
     if (s.m_vertDead[v]) continue;
@@ -289,18 +278,12 @@ void relaxTangentially(EditableSurface& s, const ReferenceSurface& reference, co
 RemeshedSurface remeshIsotropic(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles,
                                 const RemeshSettings& settings) {
   if (!(settings.targetEdge > 0)) throw std::invalid_argument("remeshIsotropic: targetEdge must be > 0");
-  ReferenceSurface reference;
-  for (const Triangle& t : triangles) {
-    std::array<Vec3d, 3> c{vertices[t[0]].cast<double>(), vertices[t[1]].cast<double>(), vertices[t[2]].cast<double>()};
-    const Vec3d centre = (c[0] + c[1] + c[2]) / 3.0;
-    reference.corners.push_back(c);
-    reference.centre.push_back(centre);
-    reference.radius.push_back(std::max({(c[0] - centre).norm(), (c[1] - centre).norm(), (c[2] - centre).norm()}));
-  }
+  const ClosestPointQuery reference(vertices, triangles);
   ReferenceBoundary boundary;
   for (const std::vector<Index>& loop : boundaryLoopVertices(triangles))
     for (std::size_t k = 0; k < loop.size(); ++k)
-      boundary.edges.push_back({vertices[loop[k]].cast<double>(), vertices[loop[(k + 1) % loop.size()]].cast<double>()});
+      boundary.edges.push_back(
+          {vertices[loop[k]].cast<double>(), vertices[loop[(k + 1) % loop.size()]].cast<double>()});
   EditableSurface s(vertices, triangles);
   const double high = 4.0 / 3.0 * settings.targetEdge, low = 4.0 / 5.0 * settings.targetEdge;
   for (int it = 0; it < settings.iterations; ++it) {
@@ -321,7 +304,8 @@ RemeshedSurface remeshIsotropic(const std::vector<Vec3>& vertices, const std::ve
       out.vertices.push_back(s.m_pos[v].cast<Real>());
     }
   for (Index f = 0; f < s.m_tris.size(); ++f)
-    if (!s.m_triDead[f]) out.triangles.push_back({newId[s.m_tris[f][0]], newId[s.m_tris[f][1]], newId[s.m_tris[f][2]]});
+    if (!s.m_triDead[f])
+      out.triangles.push_back({newId[s.m_tris[f][0]], newId[s.m_tris[f][1]], newId[s.m_tris[f][2]]});
   return out;
 }
 

@@ -32,7 +32,8 @@ std::vector<Index> buildLayers(const std::vector<Vec3>& vertices, const std::vec
   mesh.tets.clear();
   for (int k = 0; k <= settings.layers; ++k)
     for (Index i = 0; i < n; ++i)
-      mesh.vertices.push_back((vertices[i].cast<double>() + d[i] * (thickness[i] * k / settings.layers)).cast<Real>());
+      mesh.vertices.push_back(
+          (vertices[i].cast<double>() + d[i] * (thickness[i] * k / settings.layers)).cast<Real>());
   std::vector<Index> bad;
   for (int k = 0; k < settings.layers; ++k)
     for (const Triangle& f : triangles) {
@@ -71,11 +72,13 @@ std::vector<Index> buildLayers(const std::vector<Vec3>& vertices, const std::vec
 // measure as measureQuality); -1 for a non-positive tet.
 double minDihedral(const std::array<Vec3d, 4>& x) {
   if (!((x[1] - x[0]).cross(x[2] - x[0]).dot(x[3] - x[0]) > 0)) return -1;
-  const std::array<Vec3d, 4> n = {(x[2] - x[1]).cross(x[3] - x[1]).normalized(), (x[3] - x[0]).cross(x[2] - x[0]).normalized(),
-                                  (x[1] - x[0]).cross(x[3] - x[0]).normalized(), (x[2] - x[0]).cross(x[1] - x[0]).normalized()};
+  const std::array<Vec3d, 4> n = {
+      (x[2] - x[1]).cross(x[3] - x[1]).normalized(), (x[3] - x[0]).cross(x[2] - x[0]).normalized(),
+      (x[1] - x[0]).cross(x[3] - x[0]).normalized(), (x[2] - x[0]).cross(x[1] - x[0]).normalized()};
   double worst = 4;
   for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j) worst = std::min(worst, 3.141592653589793 - std::acos(std::clamp(n[i].dot(n[j]), -1.0, 1.0)));
+    for (int j = i + 1; j < 4; ++j)
+      worst = std::min(worst, 3.141592653589793 - std::acos(std::clamp(n[i].dot(n[j]), -1.0, 1.0)));
   return worst;
 }
 
@@ -103,7 +106,8 @@ void smoothLayers(TetMesh& mesh, std::size_t n, const std::vector<std::vector<In
       const std::size_t i = v % n, layerStart = v - i;
       if (neighbours[i].empty()) continue;
       Vec3d mean = Vec3d::Zero();
-      for (Index j : neighbours[i]) mean += mesh.vertices[layerStart + j].cast<double>() / double(neighbours[i].size());
+      for (Index j : neighbours[i])
+        mean += mesh.vertices[layerStart + j].cast<double>() / double(neighbours[i].size());
       const Vec3d p = mesh.vertices[v].cast<double>(), d = directions[i];
       const Vec3d move = 0.5 * ((mean - p) - d * d.dot(mean - p));
       const double before = worstAround(static_cast<Index>(v));
@@ -162,12 +166,14 @@ ExtrudedWall extrudeWall(const std::vector<Vec3>& vertices, const std::vector<Tr
   std::vector<bool> shrunk(vertices.size(), false);
   const std::vector<std::vector<Index>> neighbours = vertexNeighbours(vertices.size(), triangles);
   for (int round = 0;; ++round) {
-    const std::vector<Index> bad = buildLayers(vertices, triangles, wall.thickness, wall.directions, settings, wall.mesh);
+    const std::vector<Index> bad =
+        buildLayers(vertices, triangles, wall.thickness, wall.directions, settings, wall.mesh);
     if (bad.empty()) break;
     if (round == settings.maxShrinkRounds)
-      throw std::runtime_error("extrudeWall: " + std::to_string(bad.size()) +
-                               " surface vertices still have inverted or flat tets after shrinking the wall " +
-                               std::to_string(round) + " times");
+      throw std::runtime_error(
+          "extrudeWall: " + std::to_string(bad.size()) +
+          " surface vertices still have inverted or flat tets after shrinking the wall " +
+          std::to_string(round) + " times");
     for (Index v : bad) wall.thickness[v] *= settings.shrink, shrunk[v] = true;
     // Thickness that steps from one vertex to the next skews the prisms between them: the
     // neighbours give way too, t_i <- min(t_i, (t_i + mean_(j ~ i) t_j) / 2), twice.
@@ -187,11 +193,13 @@ ExtrudedWall extrudeWall(const std::vector<Vec3>& vertices, const std::vector<Tr
   wall.shrunkVertices = static_cast<int>(std::count(shrunk.begin(), shrunk.end(), true));
   const auto offset = static_cast<Index>(settings.layers * vertices.size());
   wall.innerSurface = triangles;
-  for (const Triangle& f : triangles) wall.outerSurface.push_back({f[0] + offset, f[1] + offset, f[2] + offset});
+  for (const Triangle& f : triangles)
+    wall.outerSurface.push_back({f[0] + offset, f[1] + offset, f[2] + offset});
   return wall;
 }
 
-std::vector<double> thicknessToSurface(const std::vector<Vec3>& vertices, const std::vector<Vec3d>& directions,
+std::vector<double> thicknessToSurface(const std::vector<Vec3>& vertices,
+                                       const std::vector<Vec3d>& directions,
                                        const std::vector<Vec3>& otherVertices,
                                        const std::vector<Triangle>& otherTriangles) {
   std::vector<double> t(vertices.size(), 0);
@@ -203,8 +211,11 @@ std::vector<double> thicknessToSurface(const std::vector<Vec3>& vertices, const 
     }
     double best = std::numeric_limits<double>::infinity();
     for (const Triangle& f : otherTriangles)
-      best = std::min(best, (closestPointOnTriangle(p, otherVertices[f[0]].cast<double>(), otherVertices[f[1]].cast<double>(),
-                                                    otherVertices[f[2]].cast<double>()) - p).norm());
+      best = std::min(best, (closestPointOnTriangle(p, otherVertices[f[0]].cast<double>(),
+                                                    otherVertices[f[1]].cast<double>(),
+                                                    otherVertices[f[2]].cast<double>()) -
+                             p)
+                                .norm());
     t[i] = best;
   }
   return t;

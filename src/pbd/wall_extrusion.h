@@ -15,14 +15,14 @@
 namespace hs::pbd {
 
 struct ExtrusionSettings {
-  int layers = 2;               // prisms across the wall
-  int normalSmoothing = 10;     // smoothNormals iterations for the offset directions
+  int layers = 2;            // prisms across the wall
+  int normalSmoothing = 10;  // smoothNormals iterations for the offset directions
   // Each offset direction is turned toward the faces at its vertex until d . n_f >= this for
   // every one of them (cos 60 degrees): a prism's side never lies along its direction.
   double minFaceCosine = 0.5;
-  // If a tet comes out inverted or flat, or an edge turned (minEdgeScale), the thickness at its surface vertices is scaled by
-  // `shrink` and the wall rebuilt, up to `maxShrinkRounds` times (where the surface is curved
-  // more sharply than the wall is thick, offsets along the normals would cross).
+  // If a tet comes out inverted or flat, or an edge turned (minEdgeScale), the thickness at its surface
+  // vertices is scaled by `shrink` and the wall rebuilt, up to `maxShrinkRounds` times (where the surface is
+  // curved more sharply than the wall is thick, offsets along the normals would cross).
   double shrink = 0.8;
   int maxShrinkRounds = 30;
   // A tet is flat when 6V < flatVolume * (its longest edge)^3 (a regular tet: 0.707).
@@ -36,12 +36,12 @@ struct ExtrusionSettings {
 };
 
 struct ExtrudedWall {
-  TetMesh mesh;  // vertex k * n + i is surface vertex i at layer k (0: the surface itself)
-  std::size_t surfaceVertices = 0;                // n
+  TetMesh mesh;                     // vertex k * n + i is surface vertex i at layer k (0: the surface itself)
+  std::size_t surfaceVertices = 0;  // n
   std::vector<Triangle> innerSurface, outerSurface;  // layer 0 (as given) and the last layer
-  std::vector<double> thickness;                  // per surface vertex, after any shrinking
-  std::vector<Vec3d> directions;                  // per surface vertex: the unit offset direction
-  int shrunkVertices = 0;                         // surface vertices whose thickness was reduced
+  std::vector<double> thickness;                     // per surface vertex, after any shrinking
+  std::vector<Vec3d> directions;                     // per surface vertex: the unit offset direction
+  int shrunkVertices = 0;                            // surface vertices whose thickness was reduced
 };
 
 // Offsets surface vertex i to x_i + (k / layers) t_i d_i for k = 0..layers, where d_i is its
@@ -65,7 +65,8 @@ std::array<Tet, 3> splitPrism(const Triangle& bottom, Index layerOffset);
 // Thickness per surface vertex from the distance along each direction to another surface (an
 // epicardium around an endocardium): the first hit of the ray x_i + t d_i, t > 0; where the
 // ray misses, the distance to the closest point of the other surface.
-std::vector<double> thicknessToSurface(const std::vector<Vec3>& vertices, const std::vector<Vec3d>& directions,
+std::vector<double> thicknessToSurface(const std::vector<Vec3>& vertices,
+                                       const std::vector<Vec3d>& directions,
                                        const std::vector<Vec3>& otherVertices,
                                        const std::vector<Triangle>& otherTriangles);
 

@@ -51,6 +51,8 @@ inline Surface inScannerFrame(const Surface& s) {
 }
 
 // V = (2/3) pi a^2 c, in mL.
-inline double halfSpheroidMl() { return 2.0 / 3.0 * std::numbers::pi * kRadiusMm * kRadiusMm * kLengthMm * 1e-3; }
+inline double halfSpheroidMl() {
+  return 2.0 / 3.0 * std::numbers::pi * kRadiusMm * kRadiusMm * kLengthMm * 1e-3;
+}
 
 }  // namespace hs::cardiac::testing

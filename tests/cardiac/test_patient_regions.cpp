@@ -36,7 +36,8 @@ TEST(PatientRegions, EverySegmentHoldsVerticesAndTheApexCapIsAtTheApex) {
     if (p.wall.mesh.vertices[i].y() < p.wall.mesh.vertices[apex].y()) apex = i;
   EXPECT_EQ(p.wall.segment[apex], 17);
   // Every layer of a vertex carries its endocardial partner's segment.
-  for (std::size_t v = 0; v < p.wall.mesh.vertices.size(); ++v) EXPECT_EQ(p.wall.segment[v], p.wall.segment[v % p.wall.endoVertices]);
+  for (std::size_t v = 0; v < p.wall.mesh.vertices.size(); ++v)
+    EXPECT_EQ(p.wall.segment[v], p.wall.segment[v % p.wall.endoVertices]);
 }
 
 TEST(PatientRegions, SeptalSegmentsLieTowardTheGivenSeptumInTheFile) {

@@ -37,8 +37,10 @@ TEST(PatientWall, TruncatedCupInAScannerFrameIsPlacedBaseUpWithItsOrificesOpened
   for (std::size_t i = 0; i < w.endoVertices; ++i) EXPECT_LT(w.mesh.vertices[i].y(), 1e-4);
   // The orifices as in the procedural heart: mitral larger, toward -x; aortic toward +x.
   EXPECT_GT(w.mitralRing.size(), w.aorticRing.size());
-  EXPECT_NEAR(ringCentre(w, w.mitralRing).x(), detail::proceduralOrificeLayout().mitralCentreX * kRadiusMm * 1e-3, 1e-3);
-  EXPECT_NEAR(ringCentre(w, w.aorticRing).x(), detail::proceduralOrificeLayout().aorticCentreX * kRadiusMm * 1e-3, 1e-3);
+  EXPECT_NEAR(ringCentre(w, w.mitralRing).x(),
+              detail::proceduralOrificeLayout().mitralCentreX * kRadiusMm * 1e-3, 1e-3);
+  EXPECT_NEAR(ringCentre(w, w.aorticRing).x(),
+              detail::proceduralOrificeLayout().aorticCentreX * kRadiusMm * 1e-3, 1e-3);
   EXPECT_NEAR(ringCentre(w, w.mitralRing).y(), 0.0, 1e-6);
   // The cavity (the orifices closed flat) is the half spheroid's, remeshed at 5 mm.
   EXPECT_NEAR(w.cavityVolume * 1e6, halfSpheroidMl(), 0.02 * halfSpheroidMl());
@@ -54,7 +56,8 @@ TEST(PatientWall, TwoAnnuliAreFoundBySizeAndTheSeptumIsOnTheAorticSide) {
   EXPECT_GT(w.mitralRing.size(), w.aorticRing.size());
   // The aortic orifice was at the cup's +x: the septum lies 45 degrees on from it, turning
   // about the long axis (the cup's +y) the way that takes anterior to septal (about -y).
-  const Vec3d septum = scannerRotation() * (Eigen::AngleAxisd(-std::numbers::pi / 4, Vec3d::UnitY()) * Vec3d::UnitX());
+  const Vec3d septum =
+      scannerRotation() * (Eigen::AngleAxisd(-std::numbers::pi / 4, Vec3d::UnitY()) * Vec3d::UnitX());
   EXPECT_NEAR(w.frame.rotation.row(0).dot(septum), -1.0, 1e-3);
   EXPECT_EQ(w.septumFrom, "aortic annulus");
   EXPECT_LT(ringCentre(w, w.aorticRing).x(), 0);
@@ -75,8 +78,9 @@ TEST(PatientWall, AnnulusOverrideSwapsTheValves) {
   const PatientWall w = buildPatientWall(heart, nullptr, settings);
   EXPECT_LT(w.mitralRing.size(), w.aorticRing.size());
   settings.mitralLoop = 3;
-  EXPECT_EQ(hs::testing::thrownMessage<std::invalid_argument>([&] { buildPatientWall(heart, nullptr, settings); }),
-            "lv.obj: mitral loop 3: expected a loop number in [1, 2]");
+  EXPECT_EQ(
+      hs::testing::thrownMessage<std::invalid_argument>([&] { buildPatientWall(heart, nullptr, settings); }),
+      "lv.obj: mitral loop 3: expected a loop number in [1, 2]");
 }
 
 TEST(PatientWall, ClosedVentricleWithAFlatBaseHasItsBaseCutAndOpened) {
@@ -84,7 +88,8 @@ TEST(PatientWall, ClosedVentricleWithAFlatBaseHasItsBaseCutAndOpened) {
   const auto loop = pbd::boundaryLoopVertices(cup.triangles).at(0);
   cup.vertices.emplace_back(0, 0, 0);
   const auto centre = static_cast<Index>(cup.vertices.size() - 1);
-  for (std::size_t k = 0; k < loop.size(); ++k) cup.triangles.push_back({centre, loop[(k + 1) % loop.size()], loop[k]});
+  for (std::size_t k = 0; k < loop.size(); ++k)
+    cup.triangles.push_back({centre, loop[(k + 1) % loop.size()], loop[k]});
   ASSERT_TRUE(pbd::checkSurface(cup.triangles).closed);
   const PatientWall w = buildPatientWall(inScannerFrame(cup), nullptr, mmSettings());
   EXPECT_TRUE(w.baseOpened);
@@ -96,7 +101,8 @@ TEST(PatientWall, EpicardiumSetsTheThickness) {
   const auto sphere = pbd::testing::makeSphere(5, 1.0);
   Surface epi;
   for (const Vec3& p : sphere.vertices)
-    epi.vertices.emplace_back(pbd::Real((kRadiusMm + 8) * p.x()), pbd::Real((kLengthMm + 8) * p.z()), pbd::Real((kRadiusMm + 8) * p.y()));
+    epi.vertices.emplace_back(pbd::Real((kRadiusMm + 8) * p.x()), pbd::Real((kLengthMm + 8) * p.z()),
+                              pbd::Real((kRadiusMm + 8) * p.y()));
   epi.triangles = sphere.triangles;
   const PatientWall w = buildPatientWall(inScannerFrame(spheroidCup()), nullptr, mmSettings());
   PatientWallSettings settings = mmSettings();
@@ -116,30 +122,39 @@ TEST(PatientWall, UnitsThatMakeNoHeartAreRefusedSuggestingTheOtherUnit) {
   const Surface mm = inScannerFrame(spheroidCup());
   PatientWallSettings settings = mmSettings();
   settings.units = LengthUnit::Metre;
-  EXPECT_EQ(hs::testing::thrownMessage<std::invalid_argument>([&] { buildPatientWall(mm, nullptr, settings); }),
-            "lv.obj: a heart 56.1 m across (5.61e+03 cm) is implausible; expected 3-30 cm; is the file in mm? "
-            "(units = \"mm\" makes it 5.61 cm)");
+  EXPECT_EQ(
+      hs::testing::thrownMessage<std::invalid_argument>([&] { buildPatientWall(mm, nullptr, settings); }),
+      "lv.obj: a heart 56.1 m across (5.61e+03 cm) is implausible; expected 3-30 cm; is the file in mm? "
+      "(units = \"mm\" makes it 5.61 cm)");
   Surface metres = mm;
   for (Vec3& p : metres.vertices) p *= pbd::Real(1e-3);
-  EXPECT_EQ(hs::testing::thrownMessage<std::invalid_argument>([&] { buildPatientWall(metres, nullptr, mmSettings()); }),
-            "lv.obj: a heart 0.0561 mm across (0.00561 cm) is implausible; expected 3-30 cm; is the file in m? "
-            "(units = \"m\" makes it 5.61 cm)");
+  EXPECT_EQ(
+      hs::testing::thrownMessage<std::invalid_argument>(
+          [&] { buildPatientWall(metres, nullptr, mmSettings()); }),
+      "lv.obj: a heart 0.0561 mm across (0.00561 cm) is implausible; expected 3-30 cm; is the file in m? "
+      "(units = \"m\" makes it 5.61 cm)");
   EXPECT_NO_THROW(buildPatientWall(metres, nullptr, settings));
-  EXPECT_NE(hs::testing::thrownMessage<std::invalid_argument>([] { checkHeartSize(5000, LengthUnit::Millimetre, "x.stl"); })
-                .find("x.stl: a heart 5e+03 mm across (500 cm) is implausible; expected 3-30 cm; check the file's units"),
+  EXPECT_NE(hs::testing::thrownMessage<std::invalid_argument>(
+                [] { checkHeartSize(5000, LengthUnit::Millimetre, "x.stl"); })
+                .find("x.stl: a heart 5e+03 mm across (500 cm) is implausible; expected 3-30 cm; check the "
+                      "file's units"),
             std::string::npos);
 }
 
 TEST(PatientWall, SurfacesThatMakeNoVentricleAreRefused) {
   const auto sphere = pbd::testing::makeSphere(3, 40.0);
-  EXPECT_EQ(hs::testing::thrownMessage<std::invalid_argument>(
-                [&] { buildPatientWall({sphere.vertices, sphere.triangles}, nullptr, mmSettings()); }),
-            "lv.obj: a closed surface without a flat base; expected boundary loops at the mitral and aortic annuli or a "
+  EXPECT_EQ(hs::testing::thrownMessage<std::invalid_argument>([&] {
+              buildPatientWall({sphere.vertices, sphere.triangles}, nullptr, mmSettings());
+            }),
+            "lv.obj: a closed surface without a flat base; expected boundary loops at the mitral and aortic "
+            "annuli or a "
             "flat truncated base");
   Surface holed = twoAnnuliVentricle();
   holed.triangles.erase(holed.triangles.begin());  // a third loop near the apex
-  EXPECT_EQ(hs::testing::thrownMessage<std::invalid_argument>([&] { buildPatientWall(holed, nullptr, mmSettings()); }),
-            "lv.obj: 3 boundary loops; expected 2 (the mitral and aortic annuli) or 1 (a flat truncated base)");
+  EXPECT_EQ(
+      hs::testing::thrownMessage<std::invalid_argument>(
+          [&] { buildPatientWall(holed, nullptr, mmSettings()); }),
+      "lv.obj: 3 boundary loops; expected 2 (the mitral and aortic annuli) or 1 (a flat truncated base)");
   EXPECT_THROW(wallResolution("medium"), std::invalid_argument);
 }
 

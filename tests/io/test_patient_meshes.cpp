@@ -21,7 +21,8 @@ using cardiac::PatientWallSettings;
 using Vec3d = Eigen::Vector3d;
 
 const std::string kBivme = std::string(HS_TEST_DATA_DIR) + "/meshes/bivme_patient1/";
-const std::string kIdealized = std::string(HS_TEST_DATA_DIR) + "/meshes/arostica2025_idealized_lv/ellipsoid_0.005.node";
+const std::string kIdealized =
+    std::string(HS_TEST_DATA_DIR) + "/meshes/arostica2025_idealized_lv/ellipsoid_0.005.node";
 
 PatientSurfaces surfacesOf(const std::string& file) { return patientSurfaces(readMesh(file), file); }
 
@@ -77,7 +78,9 @@ TEST(PatientMeshes, BivmeFrame0MakesAGoodWallAroundItsOwnCavity) {
   // ring keeps the perimeter.
   double perimeter = 0;
   for (std::size_t k = 0; k < w.mitralRing.size(); ++k)
-    perimeter += (w.mesh.vertices[w.mitralRing[k]] - w.mesh.vertices[w.mitralRing[(k + 1) % w.mitralRing.size()]]).norm();
+    perimeter +=
+        (w.mesh.vertices[w.mitralRing[k]] - w.mesh.vertices[w.mitralRing[(k + 1) % w.mitralRing.size()]])
+            .norm();
   EXPECT_NEAR(perimeter, 0.1075, 0.003);
   EXPECT_GT(w.mitralRing.size(), w.aorticRing.size());
 }
@@ -104,12 +107,14 @@ TEST(PatientMeshes, BivmeIsPlacedTheSameWhateverTheScannerFrame) {
   settings.file = "turned.obj";
   const PatientWall w = bivmeWall();
   const Eigen::Matrix3d q = Eigen::AngleAxisd(2.1, Vec3d(0.3, -1, 0.4).normalized()).toRotationMatrix();
-  for (pbd::Vec3& p : s.endocardium.vertices) p = (q * p.cast<double>() + Vec3d(500, -20, 7)).cast<pbd::Real>();
+  for (pbd::Vec3& p : s.endocardium.vertices)
+    p = (q * p.cast<double>() + Vec3d(500, -20, 7)).cast<pbd::Real>();
   const PatientWall turned = cardiac::buildPatientWall(s.endocardium, nullptr, settings);
   EXPECT_NEAR(turned.cavityLength, w.cavityLength, 1e-4);
   EXPECT_NEAR(turned.cavityVolume, w.cavityVolume, 0.005 * w.cavityVolume);
   // The same frame: the turned file's axes are q times the original's.
-  for (int r = 0; r < 3; ++r) EXPECT_NEAR(turned.frame.rotation.row(r).dot(q * w.frame.rotation.row(r).transpose()), 1.0, 1e-4);
+  for (int r = 0; r < 3; ++r)
+    EXPECT_NEAR(turned.frame.rotation.row(r).dot(q * w.frame.rotation.row(r).transpose()), 1.0, 1e-4);
 }
 
 TEST(PatientMeshes, BivmeInTheWrongUnitsIsRefused) {
@@ -117,8 +122,10 @@ TEST(PatientMeshes, BivmeInTheWrongUnitsIsRefused) {
   PatientWallSettings settings;
   settings.file = "patient1_LV_ENDOCARDIAL_000.obj";
   settings.units = LengthUnit::Metre;
-  EXPECT_EQ(testing::thrownMessage<std::invalid_argument>([&] { cardiac::buildPatientWall(s.endocardium, nullptr, settings); }),
-            "patient1_LV_ENDOCARDIAL_000.obj: a heart 91.6 m across (9.16e+03 cm) is implausible; expected 3-30 cm; is the "
+  EXPECT_EQ(testing::thrownMessage<std::invalid_argument>(
+                [&] { cardiac::buildPatientWall(s.endocardium, nullptr, settings); }),
+            "patient1_LV_ENDOCARDIAL_000.obj: a heart 91.6 m across (9.16e+03 cm) is implausible; expected "
+            "3-30 cm; is the "
             "file in mm? (units = \"mm\" makes it 9.16 cm)");
 }
 

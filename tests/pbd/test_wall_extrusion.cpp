@@ -7,8 +7,8 @@
 #include <numbers>
 #include <random>
 
-#include "pbd/surface_remesh.h"
 #include "pbd/planar_cap.h"
+#include "pbd/surface_remesh.h"
 #include "pbd/wall_extrusion.h"
 #include "sphere_surface.h"
 
@@ -46,7 +46,8 @@ TEST(ExtrudeWall, ClosedSphereShellConformsAndHasTheShellVolume) {
   const auto sphere = makeSphere(3, 1.0);
   ExtrusionSettings settings;
   settings.layers = 3;
-  const ExtrudedWall wall = extrudeWall(sphere.vertices, sphere.triangles, std::vector<double>(sphere.vertices.size(), 0.3), settings);
+  const ExtrudedWall wall = extrudeWall(sphere.vertices, sphere.triangles,
+                                        std::vector<double>(sphere.vertices.size(), 0.3), settings);
   ASSERT_EQ(wall.mesh.tets.size(), 3 * 3 * sphere.triangles.size());
   // Conforming: the only faces used by one tet are the inner and outer spheres. A cut that
   // differed between two prisms would leave their shared side as two pairs of lone faces.
@@ -57,7 +58,8 @@ TEST(ExtrudeWall, ClosedSphereShellConformsAndHasTheShellVolume) {
   double volume = 0;
   for (const Tet& t : wall.mesh.tets) volume += sixVolume(wall.mesh.vertices, t) / 6.0;
   // A polyhedral shell of inscribed spheres: within 3% of (4/3) pi (1.3^3 - 1).
-  EXPECT_NEAR(volume, 4.0 / 3.0 * std::numbers::pi * (1.3 * 1.3 * 1.3 - 1.0), 0.03 * 4.0 / 3.0 * std::numbers::pi * 1.197);
+  EXPECT_NEAR(volume, 4.0 / 3.0 * std::numbers::pi * (1.3 * 1.3 * 1.3 - 1.0),
+              0.03 * 4.0 / 3.0 * std::numbers::pi * 1.197);
   EXPECT_EQ(wall.shrunkVertices, 0);
 }
 
@@ -66,7 +68,8 @@ TEST(ExtrudeWall, OffsetInwardPastTheCentreShrinksInsteadOfInverting) {
   // itself at the centre.
   auto sphere = makeSphere(2, 1.0);
   for (Triangle& t : sphere.triangles) std::swap(t[1], t[2]);
-  const ExtrudedWall wall = extrudeWall(sphere.vertices, sphere.triangles, std::vector<double>(sphere.vertices.size(), 1.5), {});
+  const ExtrudedWall wall =
+      extrudeWall(sphere.vertices, sphere.triangles, std::vector<double>(sphere.vertices.size(), 1.5), {});
   EXPECT_GT(wall.shrunkVertices, 0);
   EXPECT_EQ(measureQuality(wall.mesh).invertedTets, 0u);
   for (double t : wall.thickness) EXPECT_LT(t, 1.0);
@@ -84,7 +87,8 @@ TEST(ClosestPointOnTriangle, AgreesWithDenseSampling) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-2, 2);
   for (int trial = 0; trial < 200; ++trial) {
-    const Vec3d a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng)), c(u(rng), u(rng), u(rng)), p(u(rng), u(rng), u(rng));
+    const Vec3d a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng)), c(u(rng), u(rng), u(rng)),
+        p(u(rng), u(rng), u(rng));
     const double exact = (closestPointOnTriangle(p, a, b, c) - p).norm();
     double sampled = 1e300;
     const int n = 120;
@@ -93,6 +97,24 @@ TEST(ClosestPointOnTriangle, AgreesWithDenseSampling) {
         sampled = std::min(sampled, (a + (b - a) * (double(i) / n) + (c - a) * (double(j) / n) - p).norm());
     EXPECT_LE(exact, sampled + 1e-12);
     EXPECT_GE(exact, sampled - 0.05 * (b - a).norm() - 0.05 * (c - a).norm());
+  }
+}
+
+TEST(ClosestPointQuery, PruningGivesTheBruteForceAnswer) {
+  const auto sphere = makeSphere(3, 1.0);
+  const ClosestPointQuery query(sphere.vertices, sphere.triangles);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.6, 1.6);
+  for (int trial = 0; trial < 300; ++trial) {
+    const Vec3d p(u(rng), u(rng), u(rng));
+    double brute = 1e300;
+    for (const Triangle& t : sphere.triangles)
+      brute = std::min(brute, (closestPointOnTriangle(p, sphere.vertices[t[0]].cast<double>(),
+                                                      sphere.vertices[t[1]].cast<double>(),
+                                                      sphere.vertices[t[2]].cast<double>()) -
+                               p)
+                                  .norm());
+    EXPECT_EQ((query.closestPoint(p) - p).norm(), brute);
   }
 }
 
@@ -208,7 +230,8 @@ TEST(LargestFlatRegion, FindsTheFlatCapOfAClosedCup) {
   const auto loops = boundaryLoopVertices(cup);
   ASSERT_EQ(loops.size(), 1u);
   const std::size_t cupSize = cup.size();
-  for (std::size_t k = 0; k < loops[0].size(); ++k) cup.push_back({centre, loops[0][(k + 1) % loops[0].size()], loops[0][k]});
+  for (std::size_t k = 0; k < loops[0].size(); ++k)
+    cup.push_back({centre, loops[0][(k + 1) % loops[0].size()], loops[0][k]});
   double area = 0;
   const auto flat = largestFlatRegion(v, cup, 2.0, 1e-6, &area);
   ASSERT_EQ(flat.size(), loops[0].size());
@@ -237,7 +260,9 @@ TEST(CapWithHoles, CoversTheRimMinusTheHolesAndJoinsTheRim) {
     area += a;
   }
   // Polygons inscribed in the circles: the 48-gon's area less the hole rings' polygons.
-  const auto polygonArea = [](double r, int n) { return 0.5 * n * r * r * std::sin(2 * std::numbers::pi / n); };
+  const auto polygonArea = [](double r, int n) {
+    return 0.5 * n * r * r * std::sin(2 * std::numbers::pi / n);
+  };
   const double expected = polygonArea(1, 48) - polygonArea(0.35, static_cast<int>(cap.holeRings[0].size())) -
                           polygonArea(0.25, static_cast<int>(cap.holeRings[1].size()));
   EXPECT_NEAR(area, expected, 1e-9);
