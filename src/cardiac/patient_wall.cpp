@@ -137,6 +137,23 @@ Vec3d rightVentricleSide(const Surface& endo, const Surface& epi, const Vec3d& y
   return across.norm() > 0.3 * radius ? across : Vec3d::Zero();
 }
 
+// A manifold, consistently oriented surface in one piece, whose loops close (a loop that does
+// not close is where the orientation flips).
+void checkTopology(const Surface& s, const std::string& file) {
+  for (const pbd::Triangle& t : s.triangles)
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+      fail(file, "a triangle uses one vertex twice; expected three distinct corners");
+  const pbd::SurfaceCheck check = pbd::checkSurface(s.triangles);
+  if (check.nonManifoldEdges > 0)
+    fail(file, std::to_string(check.nonManifoldEdges) +
+                   " edges are shared by more than two triangles; expected a manifold surface");
+  if (!check.consistentlyOriented)
+    fail(file,
+         "neighbouring triangles are wound in opposite directions; expected a consistently oriented surface");
+  if (const std::size_t pieces = pbd::connectedPieces(s.vertices.size(), s.triangles); pieces != 1)
+    fail(file, std::to_string(pieces) + " separate pieces; expected one connected endocardium");
+}
+
 // A closed surface keeps a truncated ventricle's base as its largest flat face: cut it off.
 Surface withoutFlatBase(const Surface& s, const std::string& file) {
   double flatArea = 0, totalArea = 0;
@@ -190,6 +207,7 @@ PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardi
   checkHeartSize(largestExtent(endocardium.vertices), settings.units, file);
   const double metresPerUnit = metresPer(settings.units);
   Surface s = inMetres(endocardium, metresPerUnit);
+  checkTopology(s, file);
   std::vector<std::vector<Index>> loops = pbd::boundaryLoopVertices(s.triangles);
   if (loops.empty()) {
     s = withoutFlatBase(s, file);
@@ -200,6 +218,13 @@ PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardi
                    " boundary loops; expected 2 (the mitral and aortic annuli) or 1 (a flat truncated base)");
   if (pbd::cappedSignedVolume(s.vertices, s.triangles) < 0)
     for (pbd::Triangle& t : s.triangles) std::swap(t[1], t[2]);  // face out of the cavity
+  // A cavity: the surface, its loops closed flat, holds at least 1% of its extent cubed (a
+  // ventricle holds 9-25%; a flat sheet or scattered triangles hold nothing).
+  const double cavity = pbd::cappedSignedVolume(s.vertices, s.triangles), extent = largestExtent(s.vertices);
+  if (cavity < 0.01 * extent * extent * extent)
+    fail(file, "the surface holds " + format(cavity * 1e6) +
+                   " mL with its loops closed flat, too little for a heart " + format(extent * 100) +
+                   " cm across; expected a cup-shaped endocardium");
   std::vector<detail::LoopShape> shapes;
   for (const auto& loop : loops) shapes.push_back(detail::loopShape(s.vertices, loop));
 

@@ -94,8 +94,10 @@ struct PatientWall {
 };
 
 // Builds the wall; throws std::invalid_argument with one line naming settings.file for input
-// that cannot make one (size for the units, no or too many boundary loops, a base that is not
-// flat, annulus overrides out of range).
+// that cannot make one: size for the units; a surface that is non-manifold, inconsistently
+// wound, in several pieces or holds no cavity (under 1% of its extent cubed); no or too many
+// boundary loops; a base that is not flat; annulus overrides out of range. Self-intersections
+// are not looked for.
 PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardium,
                              const PatientWallSettings& settings);
 

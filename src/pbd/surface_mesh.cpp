@@ -200,6 +200,26 @@ double cappedSignedVolume(const std::vector<Vec3>& vertices, const std::vector<T
   return volume / 6.0;
 }
 
+std::size_t connectedPieces(std::size_t vertexCount, const std::vector<Triangle>& triangles) {
+  // Union-find over vertices, path halving.
+  std::vector<Index> parent(vertexCount);
+  for (Index i = 0; i < vertexCount; ++i) parent[i] = i;
+  const auto root = [&](Index i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  std::vector<bool> used(vertexCount, false);
+  for (const Triangle& t : triangles)
+    for (std::size_t k = 0; k < 3; ++k) {
+      used[t[k]] = true;
+      const Index a = root(t[k]), b = root(t[(k + 1) % 3]);
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+  std::size_t pieces = 0;
+  for (Index i = 0; i < vertexCount; ++i) pieces += used[i] && root(i) == i;
+  return pieces;
+}
+
 std::vector<Index> largestFlatRegion(const std::vector<Vec3>& vertices,
                                      const std::vector<Triangle>& triangles, double angleDeg,
                                      double planeTolerance, double* area) {

@@ -71,6 +71,10 @@ std::optional<double> firstRayHit(const Vec3d& origin, const Vec3d& direction,
 // centroid: positive when an open cup's triangles face out of the cavity it holds.
 double cappedSignedVolume(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles);
 
+// Number of connected pieces (triangles joined through shared vertices; unused vertices are
+// not counted).
+std::size_t connectedPieces(std::size_t vertexCount, const std::vector<Triangle>& triangles);
+
 // The largest (by area) edge-connected set of triangles whose unit normals lie within
 // `angleDeg` of its first triangle's and whose vertices lie within `planeTolerance` of its
 // plane: a flat face of the surface (a truncated ventricle's base). Triangle ids, sorted; its

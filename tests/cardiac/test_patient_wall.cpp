@@ -156,6 +156,42 @@ TEST(PatientWall, SurfacesThatMakeNoVentricleAreRefused) {
           [&] { buildPatientWall(holed, nullptr, mmSettings()); }),
       "lv.obj: 3 boundary loops; expected 2 (the mitral and aortic annuli) or 1 (a flat truncated base)");
   EXPECT_THROW(wallResolution("medium"), std::invalid_argument);
+  const auto message = [](const Surface& surface) {
+    return hs::testing::thrownMessage<std::invalid_argument>(
+        [&] { buildPatientWall(surface, nullptr, mmSettings()); });
+  };
+  // A flat sheet 6 cm across: one flat loop, but no cavity.
+  Surface sheet;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) sheet.vertices.emplace_back(pbd::Real(20 * i), pbd::Real(20 * j), 0);
+  for (Index j = 0; j < 3; ++j)
+    for (Index i = 0; i < 3; ++i) {
+      const Index a = 4 * j + i;
+      sheet.triangles.push_back({a, a + 1, a + 5});
+      sheet.triangles.push_back({a, a + 5, a + 4});
+    }
+  EXPECT_EQ(message(sheet),
+            "lv.obj: the surface holds 0 mL with its loops closed flat, too little for a heart 6 cm across; "
+            "expected a "
+            "cup-shaped endocardium");
+  // A fin on the sheet: an edge of three triangles.
+  Surface fin = sheet;
+  fin.vertices.emplace_back(20, 20, 30);
+  fin.triangles.push_back({5, 6, static_cast<Index>(fin.vertices.size() - 1)});
+  EXPECT_EQ(message(fin),
+            "lv.obj: 1 edges are shared by more than two triangles; expected a manifold surface");
+  Surface flipped = twoAnnuliVentricle();
+  std::swap(flipped.triangles[0][1], flipped.triangles[0][2]);
+  EXPECT_EQ(message(flipped),
+            "lv.obj: neighbouring triangles are wound in opposite directions; expected a consistently "
+            "oriented surface");
+  Surface twice = twoAnnuliVentricle();
+  const Surface copy = twoAnnuliVentricle();
+  const auto offset = static_cast<Index>(twice.vertices.size());
+  for (const Vec3& p : copy.vertices) twice.vertices.push_back(p + Vec3(0, 0, 1));
+  for (const pbd::Triangle& t : copy.triangles)
+    twice.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  EXPECT_EQ(message(twice), "lv.obj: 2 separate pieces; expected one connected endocardium");
 }
 
 }  // namespace
