@@ -233,6 +233,17 @@ PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardi
   Vec3d septumHint = Vec3d::Zero();
   std::size_t mitral = 0, aortic = 0;
   if (loops.size() == 2) {
+    // By position: both annuli sit at the base, so their centroids lie close together along
+    // the principal axis (biv-me: 5.9% of its length apart); a hole at the apex lies the length
+    // of the ventricle away from the other loop.
+    const Vec3d axis = principalAxis(s.vertices);
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (const Vec3& p : s.vertices)
+      lo = std::min(lo, axis.dot(p.cast<double>())), hi = std::max(hi, axis.dot(p.cast<double>()));
+    const double apart = std::abs(axis.dot(shapes[0].centroid - shapes[1].centroid)) / (hi - lo);
+    if (apart > 0.3)
+      fail(file, "the 2 boundary loops lie " + format(100 * apart) +
+                     "% of the ventricle's length apart; expected both annuli at the base (within 30%)");
     std::tie(mitral, aortic) = chooseAnnuli(shapes, settings);
     const double am = shapes[mitral].vectorArea.norm(), aa = shapes[aortic].vectorArea.norm();
     baseCentre = (am * shapes[mitral].centroid + aa * shapes[aortic].centroid) / (am + aa);

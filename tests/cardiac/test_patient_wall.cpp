@@ -156,6 +156,22 @@ TEST(PatientWall, SurfacesThatMakeNoVentricleAreRefused) {
           [&] { buildPatientWall(holed, nullptr, mmSettings()); }),
       "lv.obj: 3 boundary loops; expected 2 (the mitral and aortic annuli) or 1 (a flat truncated base)");
   EXPECT_THROW(wallResolution("medium"), std::invalid_argument);
+  // A cup with a hole at its apex: two loops, but not two annuli.
+  const Surface cup = spheroidCup();
+  std::vector<Index> kept;
+  for (Index f = 0; f < cup.triangles.size(); ++f) {
+    double y = 0;
+    for (Index v : cup.triangles[f]) y += cup.vertices[v].y() / 3.0;
+    if (y > -0.97 * kLengthMm) kept.push_back(f);
+  }
+  const pbd::SubSurface apexHole = pbd::extractSubSurface(cup.vertices, cup.triangles, kept);
+  ASSERT_EQ(pbd::boundaryLoopVertices(apexHole.triangles).size(), 2u);
+  EXPECT_EQ(hs::testing::thrownMessage<std::invalid_argument>([&] {
+              buildPatientWall({apexHole.vertices, apexHole.triangles}, nullptr, mmSettings());
+            }),
+            "lv.obj: the 2 boundary loops lie 99.4% of the ventricle's length apart; expected both annuli at "
+            "the base "
+            "(within 30%)");
   const auto message = [](const Surface& surface) {
     return hs::testing::thrownMessage<std::invalid_argument>(
         [&] { buildPatientWall(surface, nullptr, mmSettings()); });
