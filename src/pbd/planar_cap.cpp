@@ -58,10 +58,10 @@ PlanarCap capWithHoles(const std::vector<Vec2d>& rim, const std::vector<Index>& 
                                     std::to_string(h + 1) + " overlap");
   }
   const double keep = kKeepAway * spacing;
-  // Points: helpers (hole centres), lattice, rings, rim.
+  // Points: guides (hole centres), lattice, rings, rim.
   std::vector<Vec2d> pts;
   for (const CircularHole& hole : holes) pts.push_back(hole.centre);
-  const std::size_t helpers = pts.size();
+  const std::size_t guides = pts.size();
   Vec2d lo = rim[0], hi = rim[0];
   for (const Vec2d& p : rim) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   const double rowH = kRowHeight * spacing;
@@ -88,15 +88,15 @@ PlanarCap capWithHoles(const std::vector<Vec2d>& rim, const std::vector<Index>& 
   }
   const std::size_t firstRim = pts.size();
   pts.insert(pts.end(), rim.begin(), rim.end());
-  // Local index -> mesh id: helpers none, lattice and rings new ids, rim its ids.
+  // Local index -> mesh id: guides none, lattice and rings new ids, rim its ids.
   std::vector<Index> id(pts.size());
-  for (std::size_t k = helpers; k < firstRim; ++k) {
-    id[k] = firstNewId + static_cast<Index>(k - helpers);
+  for (std::size_t k = guides; k < firstRim; ++k) {
+    id[k] = firstNewId + static_cast<Index>(k - guides);
     cap.newPoints.push_back(pts[k]);
   }
   for (std::size_t k = 0; k < rim.size(); ++k) id[firstRim + k] = rimIds[k];
   for (const Triangle& t : delaunayTriangulation(pts)) {
-    if (t[0] < helpers || t[1] < helpers || t[2] < helpers) continue;
+    if (t[0] < guides || t[1] < guides || t[2] < guides) continue;
     const Vec2d centroid = (pts[t[0]] + pts[t[1]] + pts[t[2]]) / 3.0;
     bool keepIt = insidePolygon(rim, centroid);
     for (const CircularHole& hole : holes) keepIt = keepIt && (centroid - hole.centre).norm() > hole.radius;

@@ -23,7 +23,7 @@ struct PlanarCap {
 // minus the holes (inside it and apart from each other), with points about `spacing` apart:
 // a triangular lattice inside, kept 0.6 spacing away from the rim and the holes so the rim's
 // and the rings' edges stay Delaunay edges, each hole's ring of ceil(2 pi r / spacing) points,
-// and a helper at each hole's centre (Delaunay, then the triangles at the helpers, in a hole
+// and a guide point at each hole's centre (Delaunay, then the triangles at the guides, in a hole
 // or outside the rim are dropped; as the procedural base plate does, cardiac/lv_base_plate).
 // Throws std::invalid_argument when a hole does not fit inside the rim.
 PlanarCap capWithHoles(const std::vector<Eigen::Vector2d>& rim, const std::vector<Index>& rimIds,
