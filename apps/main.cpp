@@ -148,6 +148,14 @@ void addMeshCommand(CLI::App& app, Commands& c) {
       "mesh", "Read a patient mesh (.obj .stl .ply .off .msh .vtu .vtk .node) and print what it holds");
   meshApp->add_option("file", c.mesh.file, "The mesh file")->required();
   meshApp->add_flag("--json", c.mesh.json, "Print one JSON object on stdout");
+  meshApp->add_flag("--wall", c.mesh.wall, "Also build the tetrahedral wall of the ventricle and report it");
+  meshApp->add_option("--units", c.mesh.units, "The file's length unit for --wall: mm or m (default: guessed)");
+  meshApp->add_option("--thickness", c.mesh.thickness, "Wall thickness in m without an epicardium (default 0.010)");
+  meshApp->add_option("--resolution", c.mesh.resolution, "coarse, default or fine")->capture_default_str();
+  meshApp->add_option("--septum", c.mesh.septum, "Direction toward the septum in the file's frame: x,y,z");
+  meshApp->add_option("--mitral-loop", c.mesh.mitralLoop, "Boundary loop number of the mitral annulus (default: the larger)");
+  meshApp->add_option("--aortic-loop", c.mesh.aorticLoop, "Boundary loop number of the aortic annulus");
+  meshApp->add_option("--epicardium", c.mesh.epicardium, "An epicardial surface file for --wall");
 }
 
 std::string joinedNames(const std::vector<CLI::App*>& subcommands) {

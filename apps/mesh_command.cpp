@@ -2,12 +2,14 @@
 
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "exit_codes.h"
 #include "io/mesh_import.h"
 #include "io/mesh_summary.h"
+#include "mesh_wall.h"
 
 namespace hs::app {
 namespace {
@@ -89,10 +91,22 @@ int meshCommand(const MeshOptions& options) {
     return kExitBadInput;
   }
   const io::MeshSummary summary = io::summarizeMesh(mesh);
+  std::optional<WallReport> wall;
+  if (options.wall) {
+    try {
+      wall = buildWallReport(mesh, summary, options);
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "heartsim: error: " << e.what() << '\n';
+      return kExitBadInput;
+    }
+  }
   if (options.json) {
-    std::cout << toJson(summary, options.file, mesh.format).dump(2) << '\n';
+    nlohmann::json j = toJson(summary, options.file, mesh.format);
+    if (wall) j["wall"] = wallJson(*wall);
+    std::cout << j.dump(2) << '\n';
   } else {
     printText(summary, options.file, mesh.format);
+    if (wall) printWall(*wall);
   }
   return kExitOk;
 }

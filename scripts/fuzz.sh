@@ -10,7 +10,8 @@ seconds=${1:-60}
 shift || true
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=(fuzz_scenario fuzz_set fuzz_lesson fuzz_checkpoint
-                                     fuzz_mesh_gmsh fuzz_mesh_tetgen fuzz_mesh_vtk fuzz_mesh_surface)
+                                     fuzz_mesh_gmsh fuzz_mesh_tetgen fuzz_mesh_vtk fuzz_mesh_surface
+                                     fuzz_patient_wall)
 scripts/install-deps.sh --fuzz
 cmake --preset fuzz >&2  # every time: a target added to fuzz/ since the last configure
 scripts/build.sh fuzz "${targets[@]}"
@@ -22,6 +23,7 @@ for t in "${targets[@]}"; do
     fuzz_scenario) cp -n scenarios/*.toml "$corpus"/ ;;
     fuzz_lesson) cp -n lessons/*.toml "$corpus"/ ;;
     fuzz_mesh_*) cp -n fuzz/seeds/"$t"/* "$corpus"/ ;;  # a marked 6-tet box in each format (tests/io/mesh_writers.h)
+    fuzz_patient_wall) cp -n fuzz/seeds/"$t"/* "$corpus"/ ;;  # biv-me's endocardium (first byte: obj, coarse)
     fuzz_checkpoint)  # two checkpoints of `normal`: without and with the run monitor's state
       if [ ! -f "$corpus/normal-run.hsck" ]; then
         heartsim=${HEARTSIM:-build/release/apps/heartsim}

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+
+#include "pbd/surface_mesh.h"
 
 namespace hs::io {
 namespace {
@@ -10,52 +11,6 @@ namespace {
 using Vec3d = Eigen::Vector3d;
 
 Vec3d at(const std::vector<pbd::Vec3>& vertices, pbd::Index i) { return vertices[i].cast<double>(); }
-
-// Directed boundary edges a -> b (as their triangle traverses them), sorted: an undirected edge
-// that only one triangle uses.
-std::vector<std::pair<pbd::Index, pbd::Index>> boundaryEdges(const std::vector<pbd::Triangle>& triangles) {
-  std::map<std::pair<pbd::Index, pbd::Index>, std::pair<int, std::pair<pbd::Index, pbd::Index>>> uses;
-  for (const pbd::Triangle& t : triangles)
-    for (int k = 0; k < 3; ++k) {
-      const pbd::Index a = t[static_cast<std::size_t>(k)], b = t[static_cast<std::size_t>((k + 1) % 3)];
-      auto& entry = uses[{std::min(a, b), std::max(a, b)}];
-      ++entry.first;
-      entry.second = {a, b};
-    }
-  std::vector<std::pair<pbd::Index, pbd::Index>> edges;
-  for (const auto& [key, entry] : uses)
-    if (entry.first == 1) edges.push_back(entry.second);
-  return edges;
-}
-
-// Boundary edges chained into loops (each a list of vertices, in the edges' direction).
-std::vector<std::vector<pbd::Index>> chainLoops(const std::vector<std::pair<pbd::Index, pbd::Index>>& edges) {
-  std::multimap<pbd::Index, std::size_t> outgoing;
-  for (std::size_t e = 0; e < edges.size(); ++e) outgoing.emplace(edges[e].first, e);
-  std::vector<bool> used(edges.size(), false);
-  std::vector<std::vector<pbd::Index>> loops;
-  for (std::size_t start = 0; start < edges.size(); ++start) {
-    if (used[start]) continue;
-    std::vector<pbd::Index> loop;
-    std::size_t e = start;
-    while (true) {
-      used[e] = true;
-      loop.push_back(edges[e].first);
-      const pbd::Index next = edges[e].second;
-      if (next == edges[start].first) break;
-      std::size_t found = edges.size();
-      for (auto [it, end] = outgoing.equal_range(next); it != end; ++it)
-        if (!used[it->second]) {
-          found = it->second;
-          break;
-        }
-      if (found == edges.size()) break;  // an open chain: the surface's orientation flips here
-      e = found;
-    }
-    loops.push_back(std::move(loop));
-  }
-  return loops;
-}
 
 // V = (1/6) sum (a x b) . c over oriented triangles (divergence theorem).
 double signedVolume(const std::vector<pbd::Vec3>& v, const std::vector<pbd::Triangle>& triangles) {
@@ -69,7 +24,7 @@ double signedVolume(const std::vector<pbd::Vec3>& v, const std::vector<pbd::Tria
 std::vector<BoundaryLoop> boundaryLoops(const std::vector<pbd::Vec3>& vertices,
                                         const std::vector<pbd::Triangle>& triangles) {
   std::vector<BoundaryLoop> loops;
-  for (const std::vector<pbd::Index>& chain : chainLoops(boundaryEdges(triangles))) {
+  for (const std::vector<pbd::Index>& chain : pbd::boundaryLoopVertices(triangles)) {
     BoundaryLoop loop;
     loop.vertices = chain.size();
     Vec3d area = Vec3d::Zero();
@@ -129,7 +84,7 @@ MeshSummary summarizeMesh(const ImportedMesh& mesh) {
   // edge a -> b the other way, as a neighbouring triangle of a closed surface would.
   std::vector<pbd::Vec3> vertices = mesh.vertices;
   std::vector<pbd::Triangle> capped = mesh.triangles;
-  for (const std::vector<pbd::Index>& chain : chainLoops(boundaryEdges(mesh.triangles))) {
+  for (const std::vector<pbd::Index>& chain : pbd::boundaryLoopVertices(mesh.triangles)) {
     Vec3d centroid = Vec3d::Zero();
     for (pbd::Index i : chain) centroid += at(mesh.vertices, i);
     vertices.push_back((centroid / double(chain.size())).cast<pbd::Real>());

@@ -39,7 +39,8 @@ struct MeshSummary {
 
 MeshSummary summarizeMesh(const ImportedMesh& mesh);
 
-// The boundary loops of a triangle surface (exposed for tests).
+// The boundary loops of a triangle surface (exposed for tests), numbered as
+// pbd::boundaryLoopVertices numbers them, as `heartsim mesh --mitral-loop` counts them.
 std::vector<BoundaryLoop> boundaryLoops(const std::vector<pbd::Vec3>& vertices,
                                         const std::vector<pbd::Triangle>& triangles);
 
