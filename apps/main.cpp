@@ -94,8 +94,13 @@ void addRenderCommand(CLI::App& app, Commands& c) {
   renderApp->add_option("--speed-max", render.speedMax, "Blood speed (m/s) at the top of the colour scale (0: from the scenario)");
   renderApp->add_option("--blood-colour", render.bloodColour, "Colour the blood by speed, pressure or origin")
       ->capture_default_str();
+  renderApp->add_option("--blood-look", render.bloodLook, "Draw the blood as a liquid surface or as spheres")
+      ->capture_default_str();
+  renderApp->add_option("--flow", render.flow, "Flow view: off, streaks (short pathlines) or arrows")
+      ->capture_default_str();
+  renderApp->add_option("--labels", render.labels, "Names on the heart: off or anatomy")->capture_default_str();
   renderApp->add_option("--pressure-max", render.pressureMax,
-                        "Blood pressure (Pa) at the top of the pressure colour scale (0: from the scenario)");
+                        "Blood pressure (mmHg) at the top of the pressure colour scale (0: from the scenario)");
   addThreadsOption(renderApp, render.threads);
   addSetOption(renderApp, render.overrides);
 }

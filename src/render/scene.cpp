@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cardiac/clinical_units.h"
+#include "render/blood_field.h"
+
 namespace hs::render {
 namespace {
 
@@ -149,7 +152,7 @@ double roundUpNicely(double v) {
 
 double defaultPressureScale(const cardiac::Scenario& scenario) {
   const double g = std::max(double(scenario.simulation.gravity.norm()), 1e-6);
-  return roundUpNicely(4 * double(scenario.blood.restDensity) * g * fallHeight(scenario));
+  return roundUpNicely(4 * double(scenario.blood.restDensity) * g * fallHeight(scenario) / cardiac::kPascalPerMmHg);
 }
 
 Vec3f originColour(cardiac::FlowRegion origin) {
@@ -213,25 +216,36 @@ Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& option
   if (s.container.enabled) scene.lines.points = boxEdges(toVec3f(s.container.min), toVec3f(s.container.max));
   if (sim.hasBlood()) {
     const double scaleMax = colourScaleMax(options, s);
-    const auto& p = sim.particles();
     scene.particles.radius = float(s.blood.radius);
     scene.particles.opacity = std::clamp(options.bloodOpacity, 0.05f, 1.0f);
-    const std::vector<pbd::Real>& pressure = sim.pressures();
-    for (std::size_t i = sim.firstBloodParticle(); i < p.size(); ++i) {
-      if (!sim.bloodActive(pbd::Index(i))) continue;  // parked outside the model (circulation.h)
-      scene.particles.centres.push_back(toVec3f(p.position[i]));
+    scene.particles.look = options.bloodLook;
+    scene.particles.liquidDownsample = options.liquidDownsample;
+    scene.clip.clipParticles = true;
+    // Speed and pressure from the SPH-smoothed field (blood_field.h), not per particle.
+    const BloodField field = smoothedBlood(sim);
+    scene.particles.centres = field.position;
+    for (std::size_t k = 0; k < field.particle.size(); ++k) {
       switch (options.bloodColour) {
         case BloodColour::Speed:
-          scene.particles.colours.push_back(speedColour(double(p.velocity[i].norm()) / scaleMax));
+          scene.particles.colours.push_back(speedColour(double(field.velocity[k].norm()) / scaleMax));
           break;
         case BloodColour::Pressure:
-          scene.particles.colours.push_back(
-              speedColour(i < pressure.size() ? double(pressure[i]) / scaleMax : 0.0));
+          scene.particles.colours.push_back(speedColour(double(field.pressure[k]) / cardiac::kPascalPerMmHg / scaleMax));
           break;
         case BloodColour::Origin:
-          scene.particles.colours.push_back(originColour(sim.bloodOrigin(pbd::Index(i))));
+          scene.particles.colours.push_back(originColour(sim.bloodOrigin(field.particle[k])));
           break;
       }
+    }
+    if (options.flow != FlowView::Off) {
+      // The lines carry the speed colours; the blood is a pale backdrop behind them.
+      const double speedMax = options.speedMax > 0 ? options.speedMax : defaultSpeedScale(s);
+      scene.particles.colours.assign(scene.particles.centres.size(), kFlowBackdropColour);
+      scene.particles.opacity = std::min(scene.particles.opacity, kFlowBackdropOpacity);
+      if (options.flow == FlowView::Streaks && options.pathlines)
+        addStreaks(scene.flow, *options.pathlines, speedMax, options.flowLineWidth);
+      if (options.flow == FlowView::Arrows)
+        addArrows(scene.flow, field.position, field.velocity, speedMax, options.flowLineWidth);
     }
   }
   return scene;
@@ -257,6 +271,67 @@ std::optional<BloodColour> parseBloodColour(std::string_view name) {
   for (const BloodColour c : {BloodColour::Speed, BloodColour::Pressure, BloodColour::Origin})
     if (name == bloodColourName(c)) return c;
   return std::nullopt;
+}
+
+const char* bloodLookName(BloodLook look) { return look == BloodLook::Liquid ? "liquid" : "spheres"; }
+
+std::optional<BloodLook> parseBloodLook(std::string_view name) {
+  for (const BloodLook look : {BloodLook::Liquid, BloodLook::Spheres})
+    if (name == bloodLookName(look)) return look;
+  return std::nullopt;
+}
+
+const char* flowViewName(FlowView flow) {
+  switch (flow) {
+    case FlowView::Off: return "off";
+    case FlowView::Streaks: return "streaks";
+    case FlowView::Arrows: return "arrows";
+  }
+  return "";
+}
+
+std::optional<FlowView> parseFlowView(std::string_view name) {
+  for (const FlowView flow : {FlowView::Off, FlowView::Streaks, FlowView::Arrows})
+    if (name == flowViewName(flow)) return flow;
+  return std::nullopt;
+}
+
+void addStreaks(FlowLines& lines, const PathlineRecorder& pathlines, double speedMax, float width) {
+  const float window = float(std::max(pathlines.window(), 1e-9));
+  for (const PathlineRecorder::Segment& s : pathlines.segments()) {
+    // Tapering from the head (age 0, full width) to a third of it at the window's far end.
+    auto taper = [&](float age) { return width * (1 - 2.0f / 3 * std::clamp(age / window, 0.0f, 1.0f)); };
+    const float ageFrom = s.age + (s.to - s.from).norm() / std::max(s.speed, 1e-6f);
+    lines.from.push_back(s.from);
+    lines.to.push_back(s.to);
+    lines.colours.push_back(speedColour(double(s.speed) / speedMax));
+    lines.widthFrom.push_back(taper(ageFrom));
+    lines.widthTo.push_back(taper(s.age));
+  }
+}
+
+void addArrows(FlowLines& lines, const std::vector<Vec3f>& positions, const std::vector<Vec3f>& velocities,
+               double speedMax, float width, int stride) {
+  constexpr float kSeconds = 0.01f;  // an arrow is the distance covered in 10 ms
+  const float longest = 2 * float(speedMax) * kSeconds;
+  auto add = [&](const Vec3f& a, const Vec3f& b, const Vec3f& colour, float w0, float w1) {
+    lines.from.push_back(a);
+    lines.to.push_back(b);
+    lines.colours.push_back(colour);
+    lines.widthFrom.push_back(w0);
+    lines.widthTo.push_back(w1);
+  };
+  for (std::size_t i = 0; i < positions.size(); i += std::size_t(std::max(1, stride))) {
+    const float speed = velocities[i].norm();
+    if (!(speed > 0)) continue;
+    const Vec3f direction = velocities[i] / speed;
+    const Vec3f shaft = direction * std::min(speed * kSeconds, longest);
+    const Vec3f colour = speedColour(double(speed) / speedMax);
+    const Vec3f tip = positions[i] + shaft;
+    add(positions[i], tip, colour, width * 0.6f, width);
+    // The head: a wedge from 30% back along the shaft, 3 widths wide at its base, to the tip.
+    add(tip - 0.3f * shaft, tip, colour, 3 * width, 0.5f);
+  }
 }
 
 std::span<const OriginKeyRow> originKey() {
@@ -329,7 +404,7 @@ void drawBloodLegend(viz::Image& image, BloodColour colour, double scaleMax) {
   const KeyLayout k(image);
   switch (colour) {
     case BloodColour::Speed: drawScaleBar(image, k, "blood speed (m/s)", scaleMax); break;
-    case BloodColour::Pressure: drawScaleBar(image, k, "blood pressure (Pa)", scaleMax); break;
+    case BloodColour::Pressure: drawScaleBar(image, k, "blood pressure (mmHg)", scaleMax); break;
     case BloodColour::Origin: drawOriginKey(image, k); break;
   }
 }

@@ -26,7 +26,7 @@ TEST(SceneLabels, NameTheInflowTheValvesTheAortaAndTheApexWhereTheyAre) {
   const cardiac::Scenario scenario;  // the thesis-scale heart
   const cardiac::HeartSimulation sim(scenario, 1);
   const std::vector<SceneLabel> labels = anatomyLabels(sim);
-  ASSERT_EQ(labels.size(), 5u);
+  ASSERT_EQ(labels.size(), 7u);
   const cardiac::FlowPath& path = sim.model().flowPath;
   const SceneLabel& mitral = named(labels, "mitral");
   const SceneLabel& aortic = named(labels, "aortic");

@@ -1,0 +1,198 @@
+#include "render/fluid_surface.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/fluid_shaders.h"
+#include "render/gl_program.h"
+#include "render/renderer.h"
+#include "render/shaders.h"
+
+namespace hs::render {
+namespace {
+
+// Filter and shading constants, in particle radii r (the blood's own length scale):
+// The spheres are drawn 1.6 r wide: the particles sit about 2 r apart, so spheres of radius r
+// leave gaps that show as pits (and, on the cut, as holes into the blood behind); at 1.6 r
+// neighbours overlap and the filter has one surface to smooth. The wall, drawn after, hides
+// what this adds beyond the blood's extent.
+constexpr float kSurfaceRadii = 1.6f;
+constexpr float kFilterRadii = 3;      // spatial reach of the bilateral filter: 3 r
+constexpr float kFalloffRadii = 6;  // range weight's depth scale: 6 r (see the note on terraces below)
+constexpr float kAbsorptionPerRadius = 1.2f;  // alpha = 1 - exp(-1.2 T / r): 0.91 through one sphere
+constexpr int kMaxFilterPixels = 20;   // cap of the filter's half width at full resolution
+
+GLuint makeTexture(GLint internalFormat, GLenum format, GLenum type, int width, int height) {
+  GLuint texture = 0;
+  glGenTextures(1, &texture);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glTexImage2D(GL_TEXTURE_2D, 0, internalFormat, width, height, 0, format, type, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return texture;
+}
+
+// A framebuffer drawing into the given colour textures (and depth buffer, if any).
+GLuint makeFramebuffer(std::initializer_list<GLuint> colours, GLuint depth) {
+  GLuint fbo = 0;
+  glGenFramebuffers(1, &fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  GLenum buffers[4] = {};
+  GLenum attachment = GL_COLOR_ATTACHMENT0;
+  for (GLuint texture : colours) {
+    glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture, 0);
+    buffers[attachment - GL_COLOR_ATTACHMENT0] = attachment;
+    ++attachment;
+  }
+  glDrawBuffers(GLsizei(colours.size()), buffers);
+  if (depth) glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error("OpenGL framebuffer of the liquid surface incomplete");
+  return fbo;
+}
+
+void setInt(GLuint program, const char* name, int value) { glUniform1i(glGetUniformLocation(program, name), value); }
+
+void setSphereUniforms(GLuint program, const ParticleCloud& cloud, const LiquidFrame& frame) {
+  glUseProgram(program);
+  setMat4(program, "uView", frame.view);
+  setMat4(program, "uProjection", frame.projection);
+  setFloat(program, "uRadius", kSurfaceRadii * cloud.radius);
+  glUniform4f(glGetUniformLocation(program, "uClip"), frame.clip.x(), frame.clip.y(), frame.clip.z(), frame.clip.w());
+  setInt(program, "uClipOn", frame.clipOn ? 1 : 0);
+}
+
+void bindTextures(std::initializer_list<GLuint> textures) {
+  GLenum unit = GL_TEXTURE0;
+  for (GLuint texture : textures) {
+    glActiveTexture(unit++);
+    glBindTexture(GL_TEXTURE_2D, texture);
+  }
+  glActiveTexture(GL_TEXTURE0);
+}
+
+}  // namespace
+
+FluidSurface::FluidSurface() {
+  m_depthProgram = linkProgram(shaders::kParticleVs, shaders::kLiquidDepthFs, shaders::kSphereHit, "liquid depth");
+  m_thicknessProgram =
+      linkProgram(shaders::kParticleVs, shaders::kLiquidThicknessFs, shaders::kSphereHit, "liquid thickness");
+  m_blurProgram = linkProgram(shaders::kFullScreenVs, shaders::kLiquidBlurFs, nullptr, "liquid filter");
+  m_compositeProgram = linkProgram(shaders::kFullScreenVs, shaders::kLiquidCompositeFs, nullptr, "liquid surface");
+}
+
+FluidSurface::~FluidSurface() {
+  resize(0, 0);
+  for (GLuint p : {m_depthProgram, m_thicknessProgram, m_blurProgram, m_compositeProgram}) glDeleteProgram(p);
+}
+
+void FluidSurface::resize(int width, int height) {
+  if (width == m_width && height == m_height) return;
+  const GLuint fbos[] = {m_sphereFbo, m_thicknessFbo, m_blurFbo};
+  const GLuint textures[] = {m_depth[0], m_depth[1], m_colour[0], m_colour[1], m_thickness};
+  glDeleteFramebuffers(3, fbos);
+  glDeleteTextures(5, textures);
+  glDeleteRenderbuffers(1, &m_depthBuffer);
+  m_sphereFbo = m_thicknessFbo = m_blurFbo = m_thickness = m_depthBuffer = 0;
+  m_depth[0] = m_depth[1] = m_colour[0] = m_colour[1] = 0;
+  m_width = width, m_height = height;
+  if (width <= 0 || height <= 0) return;
+  for (int i = 0; i < 2; ++i) {
+    m_depth[i] = makeTexture(GL_R32F, GL_RED, GL_FLOAT, width, height);
+    m_colour[i] = makeTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+  }
+  m_thickness = makeTexture(GL_R16F, GL_RED, GL_FLOAT, width, height);
+  glGenRenderbuffers(1, &m_depthBuffer);
+  glBindRenderbuffer(GL_RENDERBUFFER, m_depthBuffer);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+  m_sphereFbo = makeFramebuffer({m_depth[0], m_colour[0]}, m_depthBuffer);
+  m_thicknessFbo = makeFramebuffer({m_thickness}, 0);
+  m_blurFbo = makeFramebuffer({m_depth[1], m_colour[1]}, 0);
+}
+
+void FluidSurface::draw(const ParticleCloud& cloud, GLuint centres, GLuint colours, const LiquidFrame& frame) {
+  GLint target = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+  const bool scissor = glIsEnabled(GL_SCISSOR_TEST);
+  GLint box[4] = {};
+  glGetIntegerv(GL_SCISSOR_BOX, box);
+  const int downsample = std::max(1, cloud.liquidDownsample);
+  const int width = std::max(1, frame.width / downsample), height = std::max(1, frame.height / downsample);
+  resize(width, height);
+  glViewport(0, 0, width, height);
+  // The strip the caller draws, at this resolution, with the filter's reach around it.
+  if (scissor)
+    glScissor(box[0] / downsample - kMaxFilterPixels, 0, box[2] / downsample + 2 * kMaxFilterPixels + 2, height);
+
+  // 1: nearest sphere's depth and colour.
+  glBindFramebuffer(GL_FRAMEBUFFER, m_sphereFbo);
+  glClearColor(0, 0, 0, 0);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  const auto count = GLsizei(cloud.centres.size());
+  attribute(0, centres, 1);
+  attribute(1, colours, 1);
+  setSphereUniforms(m_depthProgram, cloud, frame);
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
+
+  // 2: thickness, every sphere's chord added.
+  glBindFramebuffer(GL_FRAMEBUFFER, m_thicknessFbo);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  setSphereUniforms(m_thicknessProgram, cloud, frame);
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
+  glDisable(GL_BLEND);
+  glVertexAttribDivisor(0, 0);
+  glVertexAttribDivisor(1, 0);
+  glDisableVertexAttribArray(0);
+  glDisableVertexAttribArray(1);
+
+  // 3: the bilateral filter along x (0 -> 1), then along y (1 -> 0).
+  glUseProgram(m_blurProgram);
+  setFloat(m_blurProgram, "uWorldRadius", kFilterRadii * cloud.radius);
+  setFloat(m_blurProgram, "uPixelsPerUnit", float(height) / (2 * frame.tanHalfY));
+  setFloat(m_blurProgram, "uFalloff", kFalloffRadii * cloud.radius);
+  setInt(m_blurProgram, "uMaxRadius", std::max(1, kMaxFilterPixels / downsample));
+  setInt(m_blurProgram, "uDepth", 0);
+  setInt(m_blurProgram, "uColour", 1);
+  for (int pass = 0; pass < 2; ++pass) {
+    glBindFramebuffer(GL_FRAMEBUFFER, pass == 0 ? m_blurFbo : m_sphereFbo);
+    bindTextures({m_depth[pass], m_colour[pass]});
+    glUniform2i(glGetUniformLocation(m_blurProgram, "uStep"), pass == 0 ? 1 : 0, pass == 0 ? 0 : 1);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+
+  // 4: the surface, blended into the caller's framebuffer with its depth.
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+  glViewport(0, 0, frame.width, frame.height);
+  if (scissor) glScissor(box[0], box[1], box[2], box[3]);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glDepthMask(cloud.opacity >= 1 ? GL_TRUE : GL_FALSE);
+  glUseProgram(m_compositeProgram);
+  bindTextures({m_depth[0], m_colour[0], m_thickness});
+  setInt(m_compositeProgram, "uDepth", 0);
+  setInt(m_compositeProgram, "uColour", 1);
+  setInt(m_compositeProgram, "uThickness", 2);
+  setMat4(m_compositeProgram, "uProjection", frame.projection);
+  glUniform2f(glGetUniformLocation(m_compositeProgram, "uTanHalf"), frame.tanHalfX, frame.tanHalfY);
+  setFloat(m_compositeProgram, "uScale", 1.0f / float(downsample));
+  setFloat(m_compositeProgram, "uOpacity", cloud.opacity);
+  setFloat(m_compositeProgram, "uAbsorption", kAbsorptionPerRadius / cloud.radius);
+  setVec3(m_compositeProgram, "uKey", frame.key);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  bindTextures({0, 0, 0});
+}
+
+}  // namespace hs::render
