@@ -8,11 +8,19 @@
 // The shaders are in fluid_shaders.h. Needs a current OpenGL 3.3 core context.
 #include <epoxy/gl.h>
 
+#include <vector>
+
 #include "render/camera.h"
 
 namespace hs::render {
 
 struct ParticleCloud;
+
+// The liquid's spheres are drawn 1.6 particle radii r wide: the particles sit about 2 r apart,
+// so spheres of radius r leave gaps that show as pits (and, on the cut, as holes into the blood
+// behind); at 1.6 r neighbours overlap and the filter has one surface to smooth. An opaque
+// wall, drawn after, hides what this adds beyond the blood's extent.
+inline constexpr float kLiquidSurfaceRadii = 1.6f;
 
 // Where and how the liquid is seen this frame.
 struct LiquidFrame {
@@ -22,7 +30,15 @@ struct LiquidFrame {
   Vec4f clip = Vec4f::Zero();        // view space; keeps dot(xyz, p) + w <= 0
   bool clipOn = false;
   Vec3f key = Vec3f(0, 0, 1);        // key light, view space, unit
+  // The pixels the blood can cover ([x0, x1) x [y0, y1), OpenGL's rows bottom-up): every pass
+  // is limited to them, which on a software renderer is most of the time saved.
+  int x0 = 0, y0 = 0, x1 = 1, y1 = 1;
 };
+
+// The pixels spheres of `radius` around `centres` can cover in a width x height image seen
+// through view and projection (tanHalfY: tan of half the vertical field of view), as
+// [x0, x1) x [y0, y1), bottom-up; the whole image when a sphere reaches the eye's plane.
+void screenExtent(const std::vector<Vec3f>& centres, float radius, LiquidFrame& frame);
 
 class FluidSurface {
  public:

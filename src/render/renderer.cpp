@@ -1,8 +1,8 @@
 // The scene renderer: one draw call per part of the scene, in the order the depth test and
-// blending need: background, lines, then blood and wall (the blood first under an opaque
-// wall, which hides it where it is in front; last over a see-through wall, so that the blood's
-// colours are never mixed with the wall's and read true against the colour key), then the
-// flow lines over both.
+// blending need: background, lines, the wall, then the blood (an opaque wall's depth hides the
+// blood behind it; the liquid's see-through edges blend over the wall drawn behind them; over a
+// see-through wall, which writes no depth, the blood is drawn whole, so that its colours are
+// never mixed with the wall's and read true against the colour key), then the flow lines.
 #include "render/renderer.h"
 
 #include <epoxy/gl.h>
@@ -229,6 +229,7 @@ void Renderer::drawBlood(const Scene& scene, const Camera& camera, const CameraM
   frame.clipOn = scene.clip.enabled && scene.clip.clipParticles;
   frame.clip = viewPlane(scene.clip, matrices.view);
   frame.key = scene.light.key.normalized();
+  screenExtent(cloud.centres, kLiquidSurfaceRadii * cloud.radius, frame);
   m_liquid->draw(cloud, g.buffers[3], g.buffers[4], frame);
   glBindVertexArray(g.vao);
 }
@@ -252,15 +253,9 @@ void Renderer::draw(const Scene& scene, const Camera& camera, int width, int hei
   for (GLuint i = 0; i < 3; ++i) glDisableVertexAttribArray(i);
   drawBackground(g.background, scene);
   if (!scene.lines.points.empty()) drawLines(g.lines, g.buffers[5], scene.lines, matrices);
-  // Opaque blood under an opaque wall goes first (the wall hides it where it is in front);
-  // see-through blood, or any blood inside a see-through wall, goes over the wall, so the wall
-  // never tints it.
-  const bool bloodLast = scene.particles.opacity < 1 || scene.wall.opacity < 1;
-  const bool blood = !scene.particles.centres.empty();
-  if (blood && !bloodLast) drawBlood(scene, camera, matrices, width, height);
   if (!scene.wall.positions.empty())
     drawWall(g.wall, {g.buffers[0], g.buffers[1], g.buffers[2]}, scene, matrices);
-  if (blood && bloodLast) drawBlood(scene, camera, matrices, width, height);
+  if (!scene.particles.centres.empty()) drawBlood(scene, camera, matrices, width, height);
   if (scene.flow.size() > 0)
     drawFlow(g.flow, {g.buffers[6], g.buffers[7], g.buffers[8], g.buffers[9]}, scene, matrices, width, height);
   glBindVertexArray(0);
