@@ -11,9 +11,11 @@ namespace hs::render::shaders {
 
 // The ray from the eye through a fragment against one particle's sphere, cut by the clipping
 // plane: shared by the sphere look (shaders.h) and the liquid's depth and thickness passes.
-// The cut keeps dot(n, x) + w <= 0 (view space). A sphere the plane crosses shows its cut
-// face (the plane, normal n toward the removed side, i.e. toward the eye), so the blood is
-// cut flat with the wall instead of bulging out of the opened heart.
+// The cut keeps dot(n, x) + w <= 0 (view space). A particle within a radius of the plane
+// shows a disc of the full radius on it (the cut face: normal n toward the removed side, i.e.
+// toward the eye), so the blood is cut flat with the wall instead of bulging out of the opened
+// heart; the full radius, not the sphere's own cross-section, so that the discs of the
+// particles near the plane close up into one face instead of leaving holes into the blood.
 inline constexpr const char* kSphereHit = R"(
 uniform float uRadius;
 uniform vec4 uClip;
@@ -26,6 +28,21 @@ bool sphereHit(vec3 d, vec3 c, out vec3 hit, out vec3 normal, out float chord) {
   hit = vec3(0.0);
   normal = vec3(0.0, 0.0, 1.0);
   chord = 0.0;
+  if (uClipOn) {
+    float fc = dot(uClip.xyz, c) + uClip.w;  // signed distance of the centre from the plane
+    float nd = dot(uClip.xyz, d);
+    if (abs(fc) < uRadius && abs(nd) > 1e-6) {
+      float tp = -uClip.w / nd;
+      vec3 onPlane = d * tp;
+      vec3 centreOnPlane = c - fc * uClip.xyz;
+      if (tp > 0.0 && distance(onPlane, centreOnPlane) < uRadius) {
+        hit = onPlane;
+        normal = normalize(uClip.xyz);
+        chord = uRadius - fc;  // from the plane to the sphere's far side along the normal
+        return true;
+      }
+    }
+  }
   if (disc < 0.0) return false;
   float s = sqrt(disc);
   float t0 = b - s, t1 = b + s;

@@ -14,7 +14,11 @@ namespace {
 // Filter and shading constants, in particle radii r (the blood's own length scale):
 constexpr float kFilterRadii = 3;      // spatial reach of the bilateral filter: 3 r
 constexpr float kFalloffRadii = 6;  // range weight's depth scale: 6 r (see the note on terraces below)
-constexpr float kAbsorptionPerRadius = 1.2f;  // alpha = 1 - exp(-1.2 T / r): 0.91 through one sphere
+// Opacity alpha = 1 - exp(-k T) (Beer-Lambert) from the thickness T summed over the surface's
+// spheres: 1.6 r wide and 2 r apart, they add about 4/3 pi (1.6 r)^3 / (2 r)^2 = 4.3 r per layer
+// of particles; k = 0.53 / r makes one layer 90% opaque, two 99%, four (a cavity's depth is
+// dozens) opaque to a unit of 8-bit colour, so the colour key reads true.
+constexpr float kAbsorptionPerRadius = 0.53f;
 constexpr int kMaxFilterPixels = 20;   // cap of the filter's half width at full resolution
 
 GLuint makeTexture(GLint internalFormat, GLenum format, GLenum type, int width, int height) {
@@ -165,15 +169,14 @@ void FluidSurface::draw(const ParticleCloud& cloud, GLuint centres, GLuint colou
   setSphereUniforms(m_depthProgram, kLiquidSurfaceRadii * cloud.radius, frame);
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
 
-  // 2: thickness, every sphere's chord added: the spheres of the particles' own radius, whose
-  // volume is the blood's (and whose smaller area, with no depth test to spare overdraw, makes
-  // this pass 2.6 times cheaper than at the surface's radius).
+  // 2: thickness, every sphere's chord added (the surface's spheres: those of the particles' own
+  // radius leave rays that pass between them, which would show as see-through holes).
   glBindFramebuffer(GL_FRAMEBUFFER, m_thicknessFbo);
   glClear(GL_COLOR_BUFFER_BIT);
   glDisable(GL_DEPTH_TEST);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
-  setSphereUniforms(m_thicknessProgram, cloud.radius, frame);
+  setSphereUniforms(m_thicknessProgram, kLiquidSurfaceRadii * cloud.radius, frame);
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
   glDisable(GL_BLEND);
   glVertexAttribDivisor(0, 0);
