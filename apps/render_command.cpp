@@ -206,7 +206,7 @@ int drawTimes(cardiac::HeartSimulation& sim, Offscreen& out, const RenderPlan& p
   // Streaks: the seeds' trajectories over the window before each time, sampled every step.
   render::PathlineRecorder pathlines;
   sceneOptions.pathlines = &pathlines;
-  sceneOptions.flowLineWidth = float(std::max(2, std::min(plan.width, plan.height) / 250));
+  sceneOptions.flowLineWidth = float(std::max(2, std::min(plan.width, plan.height) / 200));
   const auto windowSteps = static_cast<std::int64_t>(std::ceil(pathlines.window() / dt));
   const float aspect = float(plan.width) / float(plan.height);
   const int shrinkFactor = std::max(1, (plan.width + 399) / 400);

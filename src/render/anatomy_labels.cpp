@@ -114,6 +114,12 @@ void drawLabels(viz::Image& image, const std::vector<SceneLabel>& labels, const 
   const int scale = std::max(1, std::min(w, h) / 300);
   const float reach = 22.0f * float(scale);
   const int pad = 2 * scale, textHeight = viz::Image::capHeight(scale);
+  std::vector<viz::Rect> placed;  // boxes drawn so far: a name that would cover one moves down
+  auto overlaps = [&](const viz::Rect& r) {
+    for (const viz::Rect& q : placed)
+      if (r.x < q.x + q.width && q.x < r.x + r.width && r.y < q.y + q.height && q.y < r.y + r.height) return true;
+    return false;
+  };
   for (const SceneLabel& label : labels) {
     const ProjectedLabel p = projectLabel(label, camera, w, h);
     if (!p.onScreen) continue;
@@ -131,10 +137,15 @@ void drawLabels(viz::Image& image, const std::vector<SceneLabel>& labels, const 
     }
     tx = std::clamp(tx, pad, std::max(pad, w - textWidth - pad));
     ty = std::clamp(ty, pad, std::max(pad, h - textHeight - pad));
-    image.drawLine(p.x, p.y, ex, ey, kInk, 1.5 * scale);
+    viz::Rect box{tx - pad, ty - pad, textWidth + 2 * pad, textHeight + 2 * pad};
+    for (int tries = 0; tries < 12 && overlaps(box); ++tries) box.y += box.height + pad;
+    const float shift = float(box.y + pad - ty);
+    ty = box.y + pad;
+    placed.push_back(box);
+    image.drawLine(p.x, p.y, ex, ey + shift, kInk, 1.5 * scale);
     image.drawCircle(p.x, p.y, 2.5 * scale, kInk);
-    image.fillRect({tx - pad, ty - pad, textWidth + 2 * pad, textHeight + 2 * pad}, kPaper);
-    image.strokeRect({tx - pad, ty - pad, textWidth + 2 * pad, textHeight + 2 * pad}, {150, 150, 160});
+    image.fillRect(box, kPaper);
+    image.strokeRect(box, {150, 150, 160});
     image.drawText(tx, ty, label.text, scale, kInk);
   }
 }

@@ -206,7 +206,9 @@ void FluidSurface::draw(const ParticleCloud& cloud, GLuint centres, GLuint colou
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-  glDepthMask(cloud.opacity >= 1 ? GL_TRUE : GL_FALSE);
+  // No depth written: the wall is already drawn (the depth test hides the liquid behind it), and
+  // the valves' leaflets and flow lines drawn next are to show inside the blood.
+  glDepthMask(GL_FALSE);
   glUseProgram(m_compositeProgram);
   bindTextures({m_depth[0], m_colour[0], m_thickness});
   setInt(m_compositeProgram, "uDepth", 0);

@@ -4,7 +4,8 @@
 // depth image (the nearest sphere per pixel, with its colour) and a thickness image (their
 // chords added up); the depth and colour are smoothed by a separable bilateral filter; a full
 // screen pass rebuilds normals from the smoothed depth, shades the surface and blends it into
-// the framebuffer that was bound, writing its depth so that the wall hides it where it should.
+// the framebuffer that was bound, depth-tested against what is drawn (the wall), writing no
+// depth itself.
 // The shaders are in fluid_shaders.h. Needs a current OpenGL 3.3 core context.
 #include <epoxy/gl.h>
 

@@ -2,7 +2,8 @@
 // blending need: background, lines, the wall, then the blood (an opaque wall's depth hides the
 // blood behind it; the liquid's see-through edges blend over the wall drawn behind them; over a
 // see-through wall, which writes no depth, the blood is drawn whole, so that its colours are
-// never mixed with the wall's and read true against the colour key), then the flow lines.
+// never mixed with the wall's and read true against the colour key), the valves' leaflets
+// (over the liquid, which writes no depth), then the flow lines.
 #include "render/renderer.h"
 
 #include <epoxy/gl.h>
@@ -256,6 +257,14 @@ void Renderer::draw(const Scene& scene, const Camera& camera, int width, int hei
   if (!scene.wall.positions.empty())
     drawWall(g.wall, {g.buffers[0], g.buffers[1], g.buffers[2]}, scene, matrices);
   if (!scene.particles.centres.empty()) drawBlood(scene, camera, matrices, width, height);
+  if (!scene.valves.positions.empty()) {
+    Scene leaflets;  // drawWall draws a scene's wall: the leaflets as one, opaque, cut alike
+    leaflets.wall = scene.valves;
+    leaflets.wall.opacity = 1;
+    leaflets.clip = scene.clip;
+    leaflets.light = scene.light;
+    drawWall(g.wall, {g.buffers[0], g.buffers[1], g.buffers[2]}, leaflets, matrices);
+  }
   if (scene.flow.size() > 0)
     drawFlow(g.flow, {g.buffers[6], g.buffers[7], g.buffers[8], g.buffers[9]}, scene, matrices, width, height);
   glBindVertexArray(0);

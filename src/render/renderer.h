@@ -71,6 +71,9 @@ struct Light {
 
 struct Scene {
   WallMesh wall;
+  // The valves' leaflets (valve_leaflets.h): opaque, drawn after the liquid blood, which
+  // writes no depth, so they show inside it; depth-tested against the wall.
+  WallMesh valves;
   ParticleCloud particles;
   FlowLines flow;
   LineSet lines;

@@ -7,6 +7,7 @@
 
 #include "cardiac/clinical_units.h"
 #include "render/blood_field.h"
+#include "render/valve_leaflets.h"
 
 namespace hs::render {
 namespace {
@@ -207,6 +208,7 @@ Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& option
     addWall(sim, options.beating ? *options.beating : chosenBeatingRegion(sim),
             options.markOutOfStep ? outOfStepRegion(sim) : std::vector<std::uint8_t>(), scene.wall);
     scene.wall.opacity = std::clamp(options.wallOpacity, 0.05f, 1.0f);
+    if (options.valves) addValveLeaflets(sim, scene.valves);
   }
   if (options.clip) {
     scene.clip.enabled = true;

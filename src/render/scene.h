@@ -38,6 +38,7 @@ struct SceneOptions {
   // The streaks' trajectories (flow = Streaks); none: no streaks are drawn.
   const PathlineRecorder* pathlines = nullptr;
   float flowLineWidth = 2;  // pixels at a streak's head or an arrow's shaft
+  bool valves = true;       // the valves' leaflets (valve_leaflets.h), with a heart
   // The beating region drawn in beatingColour (thesis 4.3.3, Fig. 4.7): per model vertex,
   // nonzero = tinted. Unset: the region the scenario chose (cycle.segments, vertices or
   // sphere) while its cycle is on; a scenario where the whole myocardium beats singles nothing
