@@ -132,10 +132,15 @@ void ViewerApp::drawFrame(const std::string& captureTo) {
   options.bloodLook = render::BloodLook(std::clamp(m_controls.bloodLook, 0, 1));
   options.flow = render::FlowView(std::clamp(m_controls.flowView, 0, 2));
   options.pathlines = &m_pathlines;
-  options.liquidDownsample = m_liquidPacer.downsample();
+  // A --screenshot run is for the picture (it keeps 4x multisampling too): the liquid stays at
+  // full resolution; otherwise the pacer keeps 25 fps.
+  const bool forPicture = !m_options.screenshot.empty();
+  options.liquidDownsample = forPicture ? 1 : m_liquidPacer.downsample();
   const bool liquid = options.bloodLook == render::BloodLook::Liquid && m_status.hasBlood;
-  m_liquidPacer.observe(wallSeconds * 1000, liquid);
-  m_status.liquidNote = liquid ? m_liquidPacer.note() : std::string();
+  if (!forPicture) m_liquidPacer.observe(wallSeconds * 1000, liquid);
+  m_status.liquidNote = !liquid      ? std::string()
+                        : forPicture ? std::string("liquid look: full resolution for the picture")
+                                     : m_liquidPacer.note();
   const render::Scene scene = exchange(wallSeconds, options);
 
   int w = 0, h = 0, fbw = 0, fbh = 0;
