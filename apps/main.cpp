@@ -94,8 +94,13 @@ void addRenderCommand(CLI::App& app, Commands& c) {
   renderApp->add_option("--speed-max", render.speedMax, "Blood speed (m/s) at the top of the colour scale (0: from the scenario)");
   renderApp->add_option("--blood-colour", render.bloodColour, "Colour the blood by speed, pressure or origin")
       ->capture_default_str();
+  renderApp->add_option("--blood-look", render.bloodLook, "Draw the blood as a liquid surface or as spheres")
+      ->capture_default_str();
+  renderApp->add_option("--flow", render.flow, "Flow view: off, streaks (short pathlines) or arrows")
+      ->capture_default_str();
+  renderApp->add_option("--labels", render.labels, "Names on the heart: off or anatomy")->capture_default_str();
   renderApp->add_option("--pressure-max", render.pressureMax,
-                        "Blood pressure (Pa) at the top of the pressure colour scale (0: from the scenario)");
+                        "Blood pressure (mmHg) at the top of the pressure colour scale (0: from the scenario)");
   addThreadsOption(renderApp, render.threads);
   addSetOption(renderApp, render.overrides);
 }
@@ -111,6 +116,10 @@ void addViewCommand(CLI::App& app, Commands& c) {
   viewApp->add_option("--lesson", view.lesson,
                       "Run a lesson: a built-in (regional-wall-motion, rhythm, preload-afterload) or a .toml file");
   viewApp->add_option("--resume", view.resume, "Start from a checkpoint file (F5 in the viewer or run --checkpoint-every writes one)");
+  viewApp->add_option("--blood-look", view.bloodLook, "Draw the blood as a liquid surface or as spheres")
+      ->capture_default_str();
+  viewApp->add_option("--flow", view.flow, "Flow view: off, streaks (short pathlines) or arrows")->capture_default_str();
+  viewApp->add_option("--labels", view.labels, "Names on the heart: off or anatomy")->capture_default_str();
   viewApp->add_option("--resolution", view.resolution,
                       "Blood resolution: coarse, medium, fine (the scenario's), finest, or auto (the finest that "
                       "holds real time here)")

@@ -18,6 +18,7 @@
 #include "exit_codes.h"
 #include "io/output_paths.h"
 #include "progress_bar.h"
+#include "render/anatomy_labels.h"
 #include "render/gl_context.h"
 #include "render/renderer.h"
 #include "render/scene.h"
@@ -130,9 +131,15 @@ RenderPlan planRender(const RenderOptions& options, const cardiac::Scenario& sce
   if (!(options.speedMax >= 0) || !std::isfinite(options.speedMax))
     throw BadInput{"--speed-max: must be a finite speed >= 0 (m/s; 0 = from the scenario)"};
   if (!(options.pressureMax >= 0) || !std::isfinite(options.pressureMax))
-    throw BadInput{"--pressure-max: must be a finite pressure >= 0 (Pa; 0 = from the scenario)"};
+    throw BadInput{"--pressure-max: must be a finite pressure >= 0 (mmHg; 0 = from the scenario)"};
   if (!render::parseBloodColour(options.bloodColour))
     throw BadInput{"--blood-colour: unknown colour '" + options.bloodColour + "'; valid: speed, pressure, origin"};
+  if (!render::parseBloodLook(options.bloodLook))
+    throw BadInput{"--blood-look: unknown look '" + options.bloodLook + "'; valid: liquid, spheres"};
+  if (!render::parseFlowView(options.flow))
+    throw BadInput{"--flow: unknown flow view '" + options.flow + "'; valid: off, streaks, arrows"};
+  if (!render::parseLabelSet(options.labels))
+    throw BadInput{"--labels: unknown label set '" + options.labels + "'; valid: " + render::labelSetNames()};
   if (!std::isfinite(options.clipZ)) throw BadInput{"--clip-z: must be a finite position (m)"};
   prepareOutputDir(plan.outDir);
   return plan;
@@ -146,6 +153,8 @@ render::SceneOptions sceneOptionsFor(const RenderOptions& options, bool heart) {
   scene.speedMax = options.speedMax;
   scene.pressureMax = options.pressureMax;
   scene.bloodColour = *render::parseBloodColour(options.bloodColour);
+  scene.bloodLook = *render::parseBloodLook(options.bloodLook);
+  scene.flow = *render::parseFlowView(options.flow);
   return scene;
 }
 
@@ -159,12 +168,16 @@ std::string sheetFooter(const cardiac::HeartSimulation& sim, const render::Scene
               std::string(scene.clip ? " (front view cut open at z = " + formatTime(clipZ) + " m)" : "");
   if (!sim.hasBlood()) return footer;
   footer += footer.empty() ? "" : "; ";
+  if (scene.flow != render::FlowView::Off)
+    return footer + "flow " + render::flowViewName(scene.flow) + " coloured by speed, blue 0 to yellow " +
+           formatTime(scene.speedMax > 0 ? scene.speedMax : render::defaultSpeedScale(sim.scenario())) +
+           " m/s, over pale blood";
   switch (scene.bloodColour) {
     case render::BloodColour::Speed:
       footer += "blood coloured by speed, blue 0 to yellow " + formatTime(scaleMax) + " m/s";
       break;
     case render::BloodColour::Pressure:
-      footer += "blood coloured by pressure, blue 0 to yellow " + formatTime(scaleMax) + " Pa";
+      footer += "blood coloured by pressure, blue 0 to yellow " + formatTime(scaleMax) + " mmHg";
       break;
     case render::BloodColour::Origin:
       footer += "blood coloured by where it started:";
@@ -187,16 +200,25 @@ struct Offscreen {
 // Draws each time's views into PNGs and their thumbnails into `cells` (a row per time),
 // stepping the simulation to each time under the monitor's health checks.
 int drawTimes(cardiac::HeartSimulation& sim, Offscreen& out, const RenderPlan& plan,
-              const render::SceneOptions& sceneOptions, double scaleMax, std::vector<std::vector<viz::Image>>& cells,
-              std::vector<std::string>& rowLabels) {
+              render::SceneOptions sceneOptions, double scaleMax, render::LabelSet labelSet,
+              std::vector<std::vector<viz::Image>>& cells, std::vector<std::string>& rowLabels) {
   const double dt = double(sim.scenario().simulation.dt);
+  // Streaks: the seeds' trajectories over the window before each time, sampled every step.
+  render::PathlineRecorder pathlines;
+  sceneOptions.pathlines = &pathlines;
+  sceneOptions.flowLineWidth = float(std::max(2, std::min(plan.width, plan.height) / 200));
+  const auto windowSteps = static_cast<std::int64_t>(std::ceil(pathlines.window() / dt));
   const float aspect = float(plan.width) / float(plan.height);
   const int shrinkFactor = std::max(1, (plan.width + 399) / 400);
   const int textScale = std::max(1, std::min(plan.width, plan.height) / 300);
   cardiac::RunMonitor monitor(sim, cardiac::MonitorSettings::healthOnly());
   ProgressBar progress(static_cast<long>(std::llround(plan.times.back() / dt)));
   for (const double t : plan.times) {
-    while (sim.stepCount() < static_cast<std::int64_t>(std::llround(t / dt))) {
+    const auto target = static_cast<std::int64_t>(std::llround(t / dt));
+    pathlines.clear();
+    while (sim.stepCount() < target) {
+      if (sceneOptions.flow == render::FlowView::Streaks && sim.stepCount() >= target - windowSteps)
+        pathlines.record(sim);
       sim.step();
       if (const cardiac::Verdict& verdict = monitor.observe(); !verdict.healthy()) {
         progress.finish();
@@ -205,7 +227,9 @@ int drawTimes(cardiac::HeartSimulation& sim, Offscreen& out, const RenderPlan& p
       }
       progress.update(static_cast<long>(sim.stepCount()), sim.time());
     }
+    if (sceneOptions.flow == render::FlowView::Streaks) pathlines.record(sim);
     render::Scene scene = render::buildScene(sim, sceneOptions);
+    const std::vector<render::SceneLabel> labels = render::anatomyLabels(sim, labelSet);
     const std::string label = "t = " + formatTime(t) + " s";
     rowLabels.push_back(label);
     cells.emplace_back();
@@ -214,6 +238,7 @@ int drawTimes(cardiac::HeartSimulation& sim, Offscreen& out, const RenderPlan& p
       out.target.bind();
       out.renderer.draw(scene, render::viewCamera(view, scene.bounds, aspect), plan.width, plan.height);
       viz::Image image = out.target.read();
+      render::drawLabels(image, labels, render::viewCamera(view, scene.bounds, aspect));
       if (sim.hasBlood()) render::drawBloodLegend(image, sceneOptions.bloodColour, scaleMax);
       image.drawText(6 * textScale, 6 * textScale, std::string(render::viewName(view)) + ", " + label, textScale,
                      {40, 40, 50});
@@ -267,7 +292,9 @@ int renderCommand(const RenderOptions& options) {
   std::vector<std::vector<viz::Image>> cells;
   std::vector<std::string> rowLabels;
   try {
-    if (const int drawn = drawTimes(*sim, *out, plan, sceneOptions, scaleMax, cells, rowLabels); drawn != kExitOk)
+    const render::LabelSet labelSet = *render::parseLabelSet(options.labels);
+    if (const int drawn = drawTimes(*sim, *out, plan, sceneOptions, scaleMax, labelSet, cells, rowLabels);
+        drawn != kExitOk)
       return drawn;
     std::string title = scenario.name;
     if (!scenario.description.empty()) title += ": " + scenario.description;

@@ -21,7 +21,10 @@ struct RenderOptions {
   double wallOpacity = 1;              // (0, 1]; < 1 draws a see-through wall
   double speedMax = 0;                 // m/s, top of the blood colour scale; 0: from the scenario
   std::string bloodColour = "speed";   // speed, pressure or origin
-  double pressureMax = 0;              // Pa, top of the pressure colour scale; 0: from the scenario
+  double pressureMax = 0;              // mmHg, top of the pressure colour scale; 0: from the scenario
+  std::string bloodLook = "liquid";    // liquid or spheres
+  std::string flow = "off";            // off, streaks or arrows
+  std::string labels = "off";          // off or anatomy (render/anatomy_labels.h)
   int threads = 0;                     // 0 = all cores
 };
 

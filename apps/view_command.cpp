@@ -11,6 +11,8 @@
 #include "io/checkpoint.h"
 #include "io/scenario_file.h"
 #include "simulation_setup.h"
+#include "render/anatomy_labels.h"
+#include "render/scene.h"
 #include "viewer/viewer_app.h"
 
 namespace hs::app {
@@ -61,6 +63,25 @@ int viewCommand(const ViewOptions& options) {
       return kExitBadInput;
     }
   }
+  const std::optional<render::BloodLook> look = render::parseBloodLook(options.bloodLook);
+  if (!look) {
+    std::cerr << "heartsim: error: --blood-look: unknown look '" << options.bloodLook << "'; valid: liquid, spheres\n";
+    return kExitBadInput;
+  }
+  const std::optional<render::FlowView> flow = render::parseFlowView(options.flow);
+  if (!flow) {
+    std::cerr << "heartsim: error: --flow: unknown flow view '" << options.flow << "'; valid: off, streaks, arrows\n";
+    return kExitBadInput;
+  }
+  const std::optional<render::LabelSet> labels = render::parseLabelSet(options.labels);
+  if (!labels) {
+    std::cerr << "heartsim: error: --labels: unknown label set '" << options.labels
+              << "'; valid: " << render::labelSetNames() << "\n";
+    return kExitBadInput;
+  }
+  viewer.bloodLook = *look;
+  viewer.flow = *flow;
+  viewer.labels = *labels != render::LabelSet::Off;
   if (!options.resume.empty() && !options.lesson.empty()) {
     std::cerr << "heartsim: error: --resume: a lesson starts from its own scenario; give --resume or --lesson\n";
     return kExitBadInput;

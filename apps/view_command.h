@@ -17,6 +17,9 @@ struct ViewOptions {
   std::string lesson;                  // --lesson NAME|FILE: run a lesson (docs/lessons.md)
   std::string resume;                  // --resume FILE: start from a checkpoint (its scenario)
   std::string resolution = "auto";     // --resolution coarse|medium|fine|finest|auto (blood)
+  std::string bloodLook = "liquid";    // --blood-look liquid|spheres
+  std::string flow = "off";            // --flow off|streaks|arrows
+  std::string labels = "anatomy";      // --labels off|anatomy (the panel's checkbox, key N)
 };
 
 // With a lesson, the viewer starts on the lesson's scenario; with --frames it plays the lesson

@@ -1,45 +1,55 @@
 // The scene renderer: one draw call per part of the scene, in the order the depth test and
-// blending need (background, lines, particles, then the wall, which may be see-through).
+// blending need: background, lines, the wall, then the blood (an opaque wall's depth hides the
+// blood behind it; the liquid's see-through edges blend over the wall drawn behind them; over a
+// see-through wall, which writes no depth, the blood is drawn whole, so that its colours are
+// never mixed with the wall's and read true against the colour key), the valves' leaflets
+// (over the liquid, which writes no depth), then the flow lines.
 #include "render/renderer.h"
 
 #include <epoxy/gl.h>
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <cmath>
+#include <string>
 
+#include "render/fluid_shaders.h"
+#include "render/fluid_surface.h"
 #include "render/gl_program.h"
 #include "render/shaders.h"
 
 namespace hs::render {
 
 struct Renderer::Gl {
-  GLuint background = 0, wall = 0, particles = 0, lines = 0;  // programs
+  GLuint background = 0, wall = 0, particles = 0, lines = 0, flow = 0;  // programs
   GLuint vao = 0;
-  GLuint buffers[6] = {};  // wall positions, normals, colours; particle centres, colours; lines
+  // wall positions, normals, colours; particle centres, colours; lines; flow from, to, colours,
+  // widths
+  GLuint buffers[10] = {};
 };
 
 Renderer::Renderer() : m_gl(std::make_unique<Gl>()) {
   Gl& g = *m_gl;
   g.background = linkProgram(shaders::kBackgroundVs, shaders::kBackgroundFs, nullptr, "background");
   g.wall = linkProgram(shaders::kWallVs, shaders::kWallFs, shaders::kLighting, "wall");
-  g.particles = linkProgram(shaders::kParticleVs, shaders::kParticleFs, shaders::kLighting, "particles");
+  const std::string sphereLibrary = std::string(shaders::kLighting) + shaders::kSphereHit;
+  g.particles = linkProgram(shaders::kParticleVs, shaders::kParticleFs, sphereLibrary.c_str(), "particles");
   g.lines = linkProgram(shaders::kLineVs, shaders::kLineFs, nullptr, "lines");
+  g.flow = linkProgram(shaders::kFlowLineVs, shaders::kFlowLineFs, nullptr, "flow lines");
   glGenVertexArrays(1, &g.vao);
-  glGenBuffers(6, g.buffers);
+  glGenBuffers(10, g.buffers);
 }
 
 Renderer::~Renderer() {
+  m_liquid.reset();
   Gl& g = *m_gl;
-  glDeleteBuffers(6, g.buffers);
+  glDeleteBuffers(10, g.buffers);
   glDeleteVertexArrays(1, &g.vao);
-  for (GLuint p : {g.background, g.wall, g.particles, g.lines}) glDeleteProgram(p);
+  for (GLuint p : {g.background, g.wall, g.particles, g.lines, g.flow}) glDeleteProgram(p);
 }
 
 namespace {
 
-struct CameraMatrices {
-  Mat4f view, projection;
-};
 
 // Makes `program` current with the camera's matrices.
 void useProgram(GLuint program, const CameraMatrices& camera) {
@@ -58,10 +68,13 @@ void setLight(GLuint program, const Light& light) {
   setFloat(program, "uShininess", light.shininess);
 }
 
+// A plane (n, d) transforms with the inverse transpose of the point transform.
+Vec4f viewPlane(const ClipPlane& clip, const Mat4f& view) {
+  return view.inverse().transpose() * Vec4f(clip.normal.x(), clip.normal.y(), clip.normal.z(), clip.offset);
+}
+
 void setClip(GLuint program, const ClipPlane& clip, bool on, const Mat4f& view) {
-  // A plane (n, d) transforms with the inverse transpose of the point transform.
-  const Vec4f plane =
-      view.inverse().transpose() * Vec4f(clip.normal.x(), clip.normal.y(), clip.normal.z(), clip.offset);
+  const Vec4f plane = viewPlane(clip, view);
   glUniform4f(glGetUniformLocation(program, "uClip"), plane.x(), plane.y(), plane.z(), plane.w());
   glUniform1i(glGetUniformLocation(program, "uClipOn"), on ? 1 : 0);
 }
@@ -92,6 +105,13 @@ void drawLines(GLuint program, GLuint buffer, const LineSet& lines, const Camera
   glDisableVertexAttribArray(0);
 }
 
+void uploadParticles(const GLuint (&buffers)[2], const ParticleCloud& cloud) {
+  upload(buffers[0], cloud.centres);
+  upload(buffers[1], cloud.colours.size() == cloud.centres.size()
+                         ? cloud.colours
+                         : std::vector<Vec3f>(cloud.centres.size(), Vec3f(0.2f, 0.4f, 0.9f)));
+}
+
 // One instanced camera-facing rectangle per particle (centres and colours one per instance).
 void drawParticles(GLuint program, const GLuint (&buffers)[2], const Scene& scene,
                    const CameraMatrices& camera) {
@@ -101,10 +121,7 @@ void drawParticles(GLuint program, const GLuint (&buffers)[2], const Scene& scen
   setFloat(program, "uOpacity", cloud.opacity);
   setLight(program, scene.light);
   setClip(program, scene.clip, scene.clip.enabled && scene.clip.clipParticles, camera.view);
-  upload(buffers[0], cloud.centres);
-  upload(buffers[1], cloud.colours.size() == cloud.centres.size()
-                         ? cloud.colours
-                         : std::vector<Vec3f>(cloud.centres.size(), Vec3f(0.2f, 0.4f, 0.9f)));
+  uploadParticles(buffers, cloud);
   attribute(0, buffers[0], 1);
   attribute(1, buffers[1], 1);
   const bool seeThrough = cloud.opacity < 1;
@@ -161,7 +178,62 @@ void drawWall(GLuint program, const GLuint (&buffers)[3], const Scene& scene, co
   for (GLuint i = 0; i < 3; ++i) glDisableVertexAttribArray(i);
 }
 
+
+// The flow lines: one instanced ribbon of 4 vertices per segment; buffers: from, to, colours,
+// widths. Depth-tested against what is drawn (an opaque wall hides them), writing no depth.
+void drawFlow(GLuint program, const GLuint (&buffers)[4], const Scene& scene, const CameraMatrices& camera,
+              int width, int height) {
+  const FlowLines& flow = scene.flow;
+  useProgram(program, camera);
+  glUniform2f(glGetUniformLocation(program, "uViewport"), float(width) / 2, float(height) / 2);
+  setClip(program, scene.clip, scene.clip.enabled, camera.view);
+  upload(buffers[0], flow.from);
+  upload(buffers[1], flow.to);
+  upload(buffers[2], flow.colours);
+  std::vector<float> widths(2 * flow.size());
+  for (std::size_t i = 0; i < flow.size(); ++i) widths[2 * i] = flow.widthFrom[i], widths[2 * i + 1] = flow.widthTo[i];
+  for (GLuint i = 0; i < 3; ++i) attribute(i, buffers[i], 1);
+  glBindBuffer(GL_ARRAY_BUFFER, buffers[3]);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(widths.size() * sizeof(float)), widths.data(), GL_STREAM_DRAW);
+  glEnableVertexAttribArray(3);
+  glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+  glVertexAttribDivisor(3, 1);
+  glEnable(GL_CLIP_DISTANCE0);
+  glDepthMask(GL_FALSE);
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(flow.size()));
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CLIP_DISTANCE0);
+  for (GLuint i = 0; i < 4; ++i) {
+    glVertexAttribDivisor(i, 0);
+    glDisableVertexAttribArray(i);
+  }
+}
+
 }  // namespace
+
+void Renderer::drawBlood(const Scene& scene, const Camera& camera, const CameraMatrices& matrices, int width,
+                         int height) {
+  const Gl& g = *m_gl;
+  const ParticleCloud& cloud = scene.particles;
+  if (cloud.look == BloodLook::Spheres) {
+    drawParticles(g.particles, {g.buffers[3], g.buffers[4]}, scene, matrices);
+    return;
+  }
+  if (!m_liquid) m_liquid = std::make_unique<FluidSurface>();
+  uploadParticles({g.buffers[3], g.buffers[4]}, cloud);
+  LiquidFrame frame;
+  frame.view = matrices.view;
+  frame.projection = matrices.projection;
+  frame.tanHalfY = std::tan(camera.fovyDegrees * float(M_PI) / 360);
+  frame.tanHalfX = frame.tanHalfY * float(width) / float(height);
+  frame.width = width, frame.height = height;
+  frame.clipOn = scene.clip.enabled && scene.clip.clipParticles;
+  frame.clip = viewPlane(scene.clip, matrices.view);
+  frame.key = scene.light.key.normalized();
+  screenExtent(cloud.centres, kLiquidSurfaceRadii * cloud.radius, frame);
+  m_liquid->draw(cloud, g.buffers[3], g.buffers[4], frame);
+  glBindVertexArray(g.vao);
+}
 
 void Renderer::draw(const Scene& scene, const Camera& camera, int width, int height) {
   draw(scene, camera, width, height, 0, width);
@@ -182,14 +254,19 @@ void Renderer::draw(const Scene& scene, const Camera& camera, int width, int hei
   for (GLuint i = 0; i < 3; ++i) glDisableVertexAttribArray(i);
   drawBackground(g.background, scene);
   if (!scene.lines.points.empty()) drawLines(g.lines, g.buffers[5], scene.lines, matrices);
-  // See-through blood goes over the wall; opaque blood first, so a see-through wall blends over it.
-  const bool bloodLast = scene.particles.opacity < 1;
-  if (!scene.particles.centres.empty() && !bloodLast)
-    drawParticles(g.particles, {g.buffers[3], g.buffers[4]}, scene, matrices);
   if (!scene.wall.positions.empty())
     drawWall(g.wall, {g.buffers[0], g.buffers[1], g.buffers[2]}, scene, matrices);
-  if (!scene.particles.centres.empty() && bloodLast)
-    drawParticles(g.particles, {g.buffers[3], g.buffers[4]}, scene, matrices);
+  if (!scene.particles.centres.empty()) drawBlood(scene, camera, matrices, width, height);
+  if (!scene.valves.positions.empty()) {
+    Scene leaflets;  // drawWall draws a scene's wall: the leaflets as one, opaque, cut alike
+    leaflets.wall = scene.valves;
+    leaflets.wall.opacity = 1;
+    leaflets.clip = scene.clip;
+    leaflets.light = scene.light;
+    drawWall(g.wall, {g.buffers[0], g.buffers[1], g.buffers[2]}, leaflets, matrices);
+  }
+  if (scene.flow.size() > 0)
+    drawFlow(g.flow, {g.buffers[6], g.buffers[7], g.buffers[8], g.buffers[9]}, scene, matrices, width, height);
   glBindVertexArray(0);
   glUseProgram(0);
   if (strip) glDisable(GL_SCISSOR_TEST);

@@ -1,7 +1,7 @@
 #pragma once
 // The scene renderer shared by `heartsim render` (offscreen) and the viewer: a lit, optionally
-// see-through or cut-open heart wall, blood particles as shaded spheres, a wireframe box, over
-// a gradient background. The scene is plain data (scene.h builds it from a simulation), so the
+// see-through or cut-open heart wall, the blood as a liquid surface (fluid_surface.h) or as
+// shaded spheres, flow lines (streaks or arrows), a wireframe box, over a gradient background. The scene is plain data (scene.h builds it from a simulation), so the
 // renderer knows nothing about hearts. Cameras and views: camera.h.
 #include <memory>
 #include <vector>
@@ -9,6 +9,12 @@
 #include "render/camera.h"
 
 namespace hs::render {
+
+class FluidSurface;
+
+struct CameraMatrices {
+  Mat4f view, projection;
+};
 
 // Triangles as consecutive vertex triples (not indexed: creases get their own normals).
 // Front faces (counter-clockwise seen from outside) are the wall's outside; back faces are
@@ -20,10 +26,24 @@ struct WallMesh {
   std::size_t triangleCount() const { return positions.size() / 3; }
 };
 
+// How the blood is drawn: a smooth liquid surface over the particles (screen-space fluid
+// rendering, fluid_surface.h) or each particle as a shaded sphere.
+enum class BloodLook { Liquid, Spheres };
+
 struct ParticleCloud {
   std::vector<Vec3f> centres, colours;
   float radius = 0.01f;
   float opacity = 1;  // < 1: see-through, drawn over the wall without hiding it
+  BloodLook look = BloodLook::Spheres;
+  int liquidDownsample = 1;  // the liquid look's images at 1/n of the screen's resolution
+};
+
+// Flow lines as segments, each a flat-coloured screen-space ribbon from `from` to `to`, widths
+// in pixels at each end (a streak tapers toward its tail; an arrow's head is two segments).
+struct FlowLines {
+  std::vector<Vec3f> from, to, colours;
+  std::vector<float> widthFrom, widthTo;  // pixels
+  std::size_t size() const { return from.size(); }
 };
 
 // Line segments as point pairs.
@@ -37,7 +57,7 @@ struct ClipPlane {
   bool enabled = false;
   Vec3f normal = Vec3f(0, 0, 1);
   float offset = 0;
-  bool clipParticles = false;  // the wall is always clipped; particles only when asked
+  bool clipParticles = false;  // the wall (and flow lines) always clipped; particles only when asked
 };
 
 // Directional lights fixed to the camera (view space, pointing toward the light), so every
@@ -51,7 +71,11 @@ struct Light {
 
 struct Scene {
   WallMesh wall;
+  // The valves' leaflets (valve_leaflets.h): opaque, drawn after the liquid blood, which
+  // writes no depth, so they show inside it; depth-tested against the wall.
+  WallMesh valves;
   ParticleCloud particles;
+  FlowLines flow;
   LineSet lines;
   ClipPlane clip;
   Light light;
@@ -76,8 +100,11 @@ class Renderer {
   void draw(const Scene& scene, const Camera& camera, int width, int height, int x0, int x1);
 
  private:
+  void drawBlood(const Scene& scene, const Camera& camera, const CameraMatrices& matrices, int width, int height);
+
   struct Gl;
   std::unique_ptr<Gl> m_gl;
+  std::unique_ptr<FluidSurface> m_liquid;
 };
 
 }  // namespace hs::render

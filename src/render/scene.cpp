@@ -5,6 +5,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cardiac/clinical_units.h"
+#include "render/blood_field.h"
+#include "render/valve_leaflets.h"
+
 namespace hs::render {
 namespace {
 
@@ -149,7 +153,7 @@ double roundUpNicely(double v) {
 
 double defaultPressureScale(const cardiac::Scenario& scenario) {
   const double g = std::max(double(scenario.simulation.gravity.norm()), 1e-6);
-  return roundUpNicely(4 * double(scenario.blood.restDensity) * g * fallHeight(scenario));
+  return roundUpNicely(4 * double(scenario.blood.restDensity) * g * fallHeight(scenario) / cardiac::kPascalPerMmHg);
 }
 
 Vec3f originColour(cardiac::FlowRegion origin) {
@@ -204,6 +208,7 @@ Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& option
     addWall(sim, options.beating ? *options.beating : chosenBeatingRegion(sim),
             options.markOutOfStep ? outOfStepRegion(sim) : std::vector<std::uint8_t>(), scene.wall);
     scene.wall.opacity = std::clamp(options.wallOpacity, 0.05f, 1.0f);
+    if (options.valves) addValveLeaflets(sim, scene.valves);
   }
   if (options.clip) {
     scene.clip.enabled = true;
@@ -213,25 +218,36 @@ Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& option
   if (s.container.enabled) scene.lines.points = boxEdges(toVec3f(s.container.min), toVec3f(s.container.max));
   if (sim.hasBlood()) {
     const double scaleMax = colourScaleMax(options, s);
-    const auto& p = sim.particles();
     scene.particles.radius = float(s.blood.radius);
     scene.particles.opacity = std::clamp(options.bloodOpacity, 0.05f, 1.0f);
-    const std::vector<pbd::Real>& pressure = sim.pressures();
-    for (std::size_t i = sim.firstBloodParticle(); i < p.size(); ++i) {
-      if (!sim.bloodActive(pbd::Index(i))) continue;  // parked outside the model (circulation.h)
-      scene.particles.centres.push_back(toVec3f(p.position[i]));
+    scene.particles.look = options.bloodLook;
+    scene.particles.liquidDownsample = options.liquidDownsample;
+    scene.clip.clipParticles = true;
+    // Speed and pressure from the SPH-smoothed field (blood_field.h), not per particle.
+    const BloodField field = smoothedBlood(sim);
+    scene.particles.centres = field.position;
+    for (std::size_t k = 0; k < field.particle.size(); ++k) {
       switch (options.bloodColour) {
         case BloodColour::Speed:
-          scene.particles.colours.push_back(speedColour(double(p.velocity[i].norm()) / scaleMax));
+          scene.particles.colours.push_back(speedColour(double(field.velocity[k].norm()) / scaleMax));
           break;
         case BloodColour::Pressure:
-          scene.particles.colours.push_back(
-              speedColour(i < pressure.size() ? double(pressure[i]) / scaleMax : 0.0));
+          scene.particles.colours.push_back(speedColour(double(field.pressure[k]) / cardiac::kPascalPerMmHg / scaleMax));
           break;
         case BloodColour::Origin:
-          scene.particles.colours.push_back(originColour(sim.bloodOrigin(pbd::Index(i))));
+          scene.particles.colours.push_back(originColour(sim.bloodOrigin(field.particle[k])));
           break;
       }
+    }
+    if (options.flow != FlowView::Off) {
+      // The lines carry the speed colours; the blood is a pale backdrop behind them.
+      const double speedMax = options.speedMax > 0 ? options.speedMax : defaultSpeedScale(s);
+      scene.particles.colours.assign(scene.particles.centres.size(), kFlowBackdropColour);
+      scene.particles.opacity = std::min(scene.particles.opacity, kFlowBackdropOpacity);
+      if (options.flow == FlowView::Streaks && options.pathlines)
+        addStreaks(scene.flow, *options.pathlines, speedMax, options.flowLineWidth);
+      if (options.flow == FlowView::Arrows)
+        addArrows(scene.flow, field.position, field.velocity, speedMax, options.flowLineWidth);
     }
   }
   return scene;
@@ -256,6 +272,29 @@ const char* bloodColourName(BloodColour colour) {
 std::optional<BloodColour> parseBloodColour(std::string_view name) {
   for (const BloodColour c : {BloodColour::Speed, BloodColour::Pressure, BloodColour::Origin})
     if (name == bloodColourName(c)) return c;
+  return std::nullopt;
+}
+
+const char* bloodLookName(BloodLook look) { return look == BloodLook::Liquid ? "liquid" : "spheres"; }
+
+std::optional<BloodLook> parseBloodLook(std::string_view name) {
+  for (const BloodLook look : {BloodLook::Liquid, BloodLook::Spheres})
+    if (name == bloodLookName(look)) return look;
+  return std::nullopt;
+}
+
+const char* flowViewName(FlowView flow) {
+  switch (flow) {
+    case FlowView::Off: return "off";
+    case FlowView::Streaks: return "streaks";
+    case FlowView::Arrows: return "arrows";
+  }
+  return "";
+}
+
+std::optional<FlowView> parseFlowView(std::string_view name) {
+  for (const FlowView flow : {FlowView::Off, FlowView::Streaks, FlowView::Arrows})
+    if (name == flowViewName(flow)) return flow;
   return std::nullopt;
 }
 
@@ -329,7 +368,7 @@ void drawBloodLegend(viz::Image& image, BloodColour colour, double scaleMax) {
   const KeyLayout k(image);
   switch (colour) {
     case BloodColour::Speed: drawScaleBar(image, k, "blood speed (m/s)", scaleMax); break;
-    case BloodColour::Pressure: drawScaleBar(image, k, "blood pressure (Pa)", scaleMax); break;
+    case BloodColour::Pressure: drawScaleBar(image, k, "blood pressure (mmHg)", scaleMax); break;
     case BloodColour::Origin: drawOriginKey(image, k); break;
   }
 }

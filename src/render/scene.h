@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cardiac/heart_simulation.h"
+#include "render/pathlines.h"
 #include "render/renderer.h"
 #include "viz/image.h"
 
@@ -16,6 +17,11 @@ namespace hs::render {
 
 // What the blood's colour shows.
 enum class BloodColour { Speed, Pressure, Origin };
+
+// The flow view: none, short pathline streaks (pathlines.h), or arrows of the smoothed
+// velocity. With either, the lines carry the speed colours and the blood is drawn pale and
+// see-through behind them.
+enum class FlowView { Off, Streaks, Arrows };
 
 struct SceneOptions {
   // Cut the wall open: remove what lies at z > clipZ (anterior of the plane, toward the
@@ -25,7 +31,14 @@ struct SceneOptions {
   float wallOpacity = 1;  // < 1: see-through wall
   double speedMax = 0;    // m/s at the top of the colour scale; 0: defaultSpeedScale(scenario)
   BloodColour bloodColour = BloodColour::Speed;
-  double pressureMax = 0;  // Pa at the top of the pressure scale; 0: defaultPressureScale(scenario)
+  double pressureMax = 0;  // mmHg at the top of the pressure scale; 0: defaultPressureScale(scenario)
+  BloodLook bloodLook = BloodLook::Liquid;
+  int liquidDownsample = 1;  // the liquid look at 1/n of the screen's resolution (the viewer's speed)
+  FlowView flow = FlowView::Off;
+  // The streaks' trajectories (flow = Streaks); none: no streaks are drawn.
+  const PathlineRecorder* pathlines = nullptr;
+  float flowLineWidth = 2;  // pixels at a streak's head or an arrow's shaft
+  bool valves = true;       // the valves' leaflets (valve_leaflets.h), with a heart
   // The beating region drawn in beatingColour (thesis 4.3.3, Fig. 4.7): per model vertex,
   // nonzero = tinted. Unset: the region the scenario chose (cycle.segments, vertices or
   // sphere) while its cycle is on; a scenario where the whole myocardium beats singles nothing
@@ -60,16 +73,16 @@ viz::Rgb toRgb(const Vec3f& colour);
 // 6 or 8 times a power of ten; blood cannot go much faster than that.
 double defaultSpeedScale(const cardiac::Scenario& scenario);
 
-// The pressure at the top of the colour scale when none is given: four times the hydrostatic
-// pressure over the same height as defaultSpeedScale (rho0 g H), rounded up the same way.
-// Systolic pressures above it are drawn at the top colour.
+// The pressure (mmHg) at the top of the colour scale when none is given: four times the
+// hydrostatic pressure over the same height as defaultSpeedScale (rho0 g H), in mmHg, rounded
+// up the same way. Systolic pressures above it are drawn at the top colour.
 double defaultPressureScale(const cardiac::Scenario& scenario);
 // Origin colours: blood that started in the inflow vessel (blue), in the ventricle (violet),
 // or outside the model, entering through the loop (green).
 Vec3f originColour(cardiac::FlowRegion origin);
 
 // The top of the blood's colour scale for options.bloodColour: speedMax (m/s) or pressureMax
-// (Pa), or the scenario's default where it is 0; 0 for origin colours, which have no scale.
+// (mmHg), or the scenario's default where it is 0; 0 for origin colours, which have no scale.
 double colourScaleMax(const SceneOptions& options, const cardiac::Scenario& scenario);
 
 // What the cameras frame: the wall's rest shape (so every time is seen from the same place)
@@ -85,9 +98,26 @@ Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& option
 void applyView(Scene& scene, const SceneOptions& options, View view);
 
 // What each blood colour mode is called ("speed", "pressure", "origin"), and back; nullopt
-// for an unknown name.
+// for an unknown name. The same for looks ("liquid", "spheres") and flow views ("off",
+// "streaks", "arrows").
 const char* bloodColourName(BloodColour colour);
 std::optional<BloodColour> parseBloodColour(std::string_view name);
+const char* bloodLookName(BloodLook look);
+std::optional<BloodLook> parseBloodLook(std::string_view name);
+const char* flowViewName(FlowView flow);
+std::optional<FlowView> parseFlowView(std::string_view name);
+
+// The pale colour of the blood behind the flow lines, and its opacity.
+inline const Vec3f kFlowBackdropColour(0.93f, 0.80f, 0.80f);
+inline constexpr float kFlowBackdropOpacity = 0.35f;
+
+// Segments of the flow lines coloured by speed on the scale [0, speedMax]: streaks from the
+// recorder (tapering from `width` pixels at the head to a third of it at the tail), or an arrow
+// per `stride`-th blood particle along its smoothed velocity, as long as the distance it covers
+// in 10 ms.
+void addStreaks(FlowLines& lines, const PathlineRecorder& pathlines, double speedMax, float width);
+void addArrows(FlowLines& lines, const std::vector<Vec3f>& positions, const std::vector<Vec3f>& velocities,
+               double speedMax, float width, int stride = 3);
 
 // The origins a key lists, in order, with what each means.
 struct OriginKeyRow {
@@ -98,7 +128,7 @@ struct OriginKeyRow {
 std::span<const OriginKeyRow> originKey();
 
 // The blood's colour key in the image's lower right corner, text scaled with the image: a bar
-// "blood speed (m/s)" or "blood pressure (Pa)" from 0 to scaleMax, or the origin key.
+// "blood speed (m/s)" or "blood pressure (mmHg)" from 0 to scaleMax, or the origin key.
 void drawBloodLegend(viz::Image& image, BloodColour colour, double scaleMax);
 
 }  // namespace hs::render

@@ -2,7 +2,7 @@
 // GLSL 3.30 sources of the scene renderer's programs (renderer.cpp): a gradient background,
 // the lit wall with its cut face, blood particles as ray-cast spheres on camera-facing
 // rectangles, and plain lines. kLighting holds shade(), linked into the lit fragment shaders
-// as a shader object of its own.
+// as a shader object of its own (with kSphereHit of fluid_shaders.h for the spheres).
 
 namespace hs::render::shaders {
 
@@ -104,22 +104,20 @@ void main() {
 inline constexpr const char* kParticleFs = R"(#version 330 core
 in vec3 vViewPos, vCentre, vColour;
 uniform mat4 uProjection;
-uniform float uRadius, uOpacity;
-uniform vec4 uClip;
-uniform bool uClipOn;
+uniform float uOpacity;
 out vec4 colour;
 vec3 shade(vec3 base, vec3 n, vec3 v);
+bool sphereHit(vec3 d, vec3 c, out vec3 hit, out vec3 normal, out float chord);
 void main() {
-  // Ray from the eye through this fragment against the sphere: the nearest hit.
+  // Ray from the eye through this fragment against the sphere (cut by the clipping plane,
+  // fluid_shaders.h): the nearest kept hit.
   vec3 d = normalize(vViewPos);
-  float b = dot(d, vCentre);
-  float disc = b * b - dot(vCentre, vCentre) + uRadius * uRadius;
-  if (disc < 0.0) discard;
-  vec3 hit = d * (b - sqrt(disc));
-  if (uClipOn && dot(uClip.xyz, hit) + uClip.w > 0.0) discard;
+  vec3 hit, n;
+  float chord;
+  if (!sphereHit(d, vCentre, hit, n, chord)) discard;
   vec4 clipPos = uProjection * vec4(hit, 1.0);
   gl_FragDepth = clipPos.z / clipPos.w * 0.5 + 0.5;
-  colour = vec4(shade(vColour, (hit - vCentre) / uRadius, -d), uOpacity);
+  colour = vec4(shade(vColour, n, -d), uOpacity);
 }
 )";
 

@@ -68,7 +68,8 @@ constexpr Row kControls[] = {
     {"cardiac cycle", "Thesis models: the wall's motion is prescribed (heart rate, contraction); the "
                       "blood follows the wall, pressures do not change the filling.",
      "restarts"},
-    {"Display", "Clipping plane, wall opacity, blood colours, labels and views: only the picture changes.",
+    {"Display", "Clipping plane, wall opacity, blood colours, look (liquid or spheres), flow streaks or "
+                "arrows, labels and views: only the picture changes.",
      ""},
     {"speed", "Simulated seconds per second. When the computer cannot keep up, the panel says so "
               "('asked 1x, reaching 0.3x'): you see slow motion, nothing is skipped.",

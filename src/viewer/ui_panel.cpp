@@ -168,8 +168,8 @@ void scenarioSection(ViewerControls& c, const ViewerStatus& s, const std::vector
 void displaySection(ViewerControls& c, const ViewerStatus& s) {
   if (s.hasHeart) {
     ImGui::Checkbox("labels and flow arrows", &c.showLabels);
-    tooltip("Name the inflow (from the left atrium), the mitral and aortic valves, the aorta and the "
-            "apex on the heart, with arrows the way blood flows forward (N)");
+    tooltip("Name the left ventricle, the inflow (from the left atrium), the mitral and aortic valves, "
+            "the aorta, the septum and the apex on the heart, with arrows the way blood flows forward (N)");
     ImGui::Checkbox("clipping plane", &c.clip);
     tooltip("Cut the wall open to see into the cavity (removes what lies in front of the plane z = const)");
     ImGui::BeginDisabled(!c.clip);
@@ -182,8 +182,17 @@ void displaySection(ViewerControls& c, const ViewerStatus& s) {
   if (s.hasBlood) {
     const char* kinds[] = {"speed", "pressure", "origin"};
     ImGui::Combo("blood colour", &c.bloodColour, kinds, 3);
-    tooltip("What the blood's colour shows: its speed (m/s), its pressure (Pa, from the density "
-            "solve), or where it started (inflow vessel, ventricle, or outside, through the loop)");
+    tooltip("What the blood's colour shows: its speed (m/s) or its pressure (mmHg, from the density "
+            "solve), both smoothed over the neighbours, or where it started (inflow vessel, "
+            "ventricle, or outside, through the loop)");
+    const char* looks[] = {"liquid", "spheres"};
+    ImGui::Combo("blood look", &c.bloodLook, looks, 2);
+    tooltip("Liquid: a smooth surface over the particles (screen-space fluid); spheres: each "
+            "particle as a ball. The liquid's resolution is lowered when needed to keep 25 fps");
+    const char* flows[] = {"off", "streaks", "arrows"};
+    ImGui::Combo("flow", &c.flowView, flows, 3);
+    tooltip("Streaks: where blood went over the last 40 ms; arrows: its velocity now (the distance "
+            "it covers in 10 ms). Both coloured by speed over pale blood");
   }
   ImGui::TextUnformatted("view");
   ImGui::SameLine();
@@ -268,12 +277,15 @@ float drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge
       ImGui::TextUnformatted("beats out of step");
     }
   }
-  if (status.hasBlood) {
+  if (status.hasBlood && status.flowView != 0) {
+    if (status.hasHeart) ImGui::Spacing();
+    scaleLegend("Flow lines: speed (m/s)", status.speedMax, "m/s");
+  } else if (status.hasBlood) {
     if (status.hasHeart) ImGui::Spacing();
     switch (render::BloodColour(status.bloodColour)) {
       case render::BloodColour::Speed: scaleLegend("Blood speed (m/s)", status.speedMax, "m/s"); break;
       case render::BloodColour::Pressure:
-        scaleLegend("Blood pressure (Pa)", status.pressureMax, "Pa");
+        scaleLegend("Blood pressure (mmHg)", status.pressureMax, "mmHg");
         break;
       case render::BloodColour::Origin: originLegend(); break;
     }
@@ -300,6 +312,12 @@ void drawStatusOverlay(const ViewerStatus& status, float rightEdge, float bottom
   else if (status.cavity >= 0)
     ImGui::Text("cavity volume: %.1f mL", status.cavity * status.pump.scale.volume);
   ImGui::Text("frame: %.1f ms (%.0f fps)", status.frameMs, status.frameMs > 0 ? 1000 / status.frameMs : 0.0);
+  if (!status.liquidNote.empty()) {
+    // Wrapped to the corner's usual width, so that it still fits beside the colour key.
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 220);
+    ImGui::TextWrapped("%s", status.liquidNote.c_str());
+    ImGui::PopTextWrapPos();
+  }
   if (status.behind)
     ImGui::TextColored(ImVec4(0.85f, 0.45f, 0.05f, 1), "slow motion: %.2gx real time", status.realTimeFactor);
   ImGui::End();

@@ -35,6 +35,8 @@ struct ViewerControls {
   float clipZ = 0;  // m: what lies at z > clipZ is cut away
   float wallOpacity = 1;
   int bloodColour = 0;  // render::BloodColour: speed, pressure, origin
+  int bloodLook = 0;    // render::BloodLook: liquid, spheres
+  int flowView = 0;     // render::FlowView: off, streaks, arrows
   bool showHelp = false;
   bool showLabels = true;  // the anatomy's names and the flow's arrows on the scene (N)
   PanelSection openSection = PanelSection::Region;
@@ -68,8 +70,10 @@ struct ViewerStatus {
   bool physiological = false;       // cycle timing mode (heart rate applies)
   float heartSize = 1;              // m, the cavity's radius at the base: scales the beat's sliders
   double speedMax = 1;              // m/s at the top of the blood colour scale
-  double pressureMax = 1;           // Pa at the top of the pressure colour scale
+  double pressureMax = 1;           // mmHg at the top of the pressure colour scale
   int bloodColour = 0;              // what the blood's colour shows (render::BloodColour)
+  int flowView = 0;                 // the flow lines drawn (render::FlowView): they carry the speed key
+  std::string liquidNote;           // the liquid look's resolution and why (liquid_pacer.h)
   float clipMin = -1, clipMax = 1;  // range of the clipping plane's slider (m)
   std::string message;              // an event to show as a toast: "saved /home/a/heartsim_normal_001.png"
   ResolutionStatus resolution;  // the blood's resolution and its pace (blood_resolution.h)

@@ -38,6 +38,9 @@ ViewerApp::ViewerApp(const ViewerOptions& options)
   m_imgui = std::make_unique<ImGuiSession>(m_window.handle);
   m_renderer = std::make_unique<render::Renderer>();
   m_controls.scenarioIndex = scenarioIndex(options.builtinName);
+  m_controls.bloodLook = int(options.bloodLook);
+  m_controls.flowView = int(options.flow);
+  m_controls.showLabels = options.labels;
   if (options.lesson) m_lesson = std::make_unique<LessonPlayer>(*options.lesson, options.frames > 0);
   m_controls.blood.resolution = options.resolution.value_or(kScenarioResolution);
   m_status.resolution.fixedBy = options.bloodFixedBy;

@@ -10,6 +10,7 @@
 
 #include "cardiac/scenario.h"
 #include "io/checkpoint.h"
+#include "render/scene.h"
 #include "viewer/blood_resolution.h"
 #include "viewer/lesson.h"
 
@@ -36,6 +37,10 @@ struct ViewerOptions {
   // --resume FILE: the checkpoint to start from (its scenario is `scenario`) and the file's name.
   std::optional<io::Checkpoint> resume;
   std::string resumeSource;
+  // --blood-look, --flow, --labels: the display's first settings (the panel changes them).
+  render::BloodLook bloodLook = render::BloodLook::Liquid;
+  render::FlowView flow = render::FlowView::Off;
+  bool labels = true;
 };
 
 // Opens the window and runs until it is closed (or `frames` have been drawn). Throws

@@ -28,6 +28,7 @@
 #include "viewer/resolution_probe.h"
 #include "viewer/run_comparison.h"
 #include "viewer/scene_framing.h"
+#include "viewer/liquid_pacer.h"
 #include "viewer/scene_labels.h"
 #include "viewer/scene_overlays.h"
 #include "viewer/simulation_runner.h"
@@ -82,6 +83,10 @@ class ViewerApp {
   KeyEvents m_keys;                // pressed since the last frame
   Toasts m_toasts;                 // messages shown in the scene
   std::vector<SceneLabel> m_labels;  // the anatomy's names, where they are this frame
+  LiquidPacer m_liquidPacer;         // the liquid look's resolution for 25 fps
+  // The streaks' trajectories, sampled once a frame: 40 ms, so that a few frames make a streak
+  // at the simulation's usual pace in the viewer.
+  render::PathlineRecorder m_pathlines{0.04, 2};
   std::unique_ptr<LessonPlayer> m_lesson;  // with --lesson
   LessonRequests m_lessonRequests;         // from the lesson window, for the next frame
   // The start-up measurement of the blood's levels (the simulation is held while it runs) and

@@ -53,12 +53,17 @@ render::Scene ViewerApp::exchange(double frameSeconds, const render::SceneOption
     m_status.pump.lumped = m_status.circulation.lumped;
     m_status.pump.axes = m_axes;
     m_status.bloodColour = c.bloodColour;
+    m_status.flowView = c.flowView;
     m_region.fillStatus(m_status.region, sim.scenario().cycle.enabled);
     const std::vector<std::uint8_t> outOfStep = render::outOfStepRegion(sim);
     m_status.region.outOfStep.fill(false);
     for (std::size_t v = 0; v < outOfStep.size(); ++v)
       if (outOfStep[v]) m_status.region.outOfStep[sim.model().segment[v]] = true;
     m_labels = m_controls.showLabels ? anatomyLabels(sim) : std::vector<SceneLabel>();
+    if (options.flow == render::FlowView::Streaks)
+      m_pathlines.record(sim);
+    else
+      m_pathlines.clear();
     scene = render::buildScene(sim, options);
   });
   m_dabs.clear();
@@ -124,6 +129,18 @@ void ViewerApp::drawFrame(const std::string& captureTo) {
   // While a region is chosen or painted, the blood lets it show through.
   if (m_controls.region.paintMode || m_controls.region.showRegion) options.bloodOpacity = 0.3f;
   options.bloodColour = render::BloodColour(std::clamp(m_controls.bloodColour, 0, 2));
+  options.bloodLook = render::BloodLook(std::clamp(m_controls.bloodLook, 0, 1));
+  options.flow = render::FlowView(std::clamp(m_controls.flowView, 0, 2));
+  options.pathlines = &m_pathlines;
+  // A --screenshot run is for the picture (it keeps 4x multisampling too): the liquid stays at
+  // full resolution; otherwise the pacer keeps 25 fps.
+  const bool forPicture = !m_options.screenshot.empty();
+  options.liquidDownsample = forPicture ? 1 : m_liquidPacer.downsample();
+  const bool liquid = options.bloodLook == render::BloodLook::Liquid && m_status.hasBlood;
+  if (!forPicture) m_liquidPacer.observe(wallSeconds * 1000, liquid);
+  m_status.liquidNote = !liquid      ? std::string()
+                        : forPicture ? std::string("liquid look: full resolution for the picture")
+                                     : m_liquidPacer.note();
   const render::Scene scene = exchange(wallSeconds, options);
 
   int w = 0, h = 0, fbw = 0, fbh = 0;

@@ -80,6 +80,7 @@ void ViewerApp::reportScriptedRun(const std::vector<double>& seconds) {
     });
   }
   std::fprintf(stderr, "%s\n", scriptedRunLine(summariseFrameTimes(seconds, 10), pace).c_str());
+  if (!m_status.liquidNote.empty()) std::fprintf(stderr, "heartsim: %s\n", m_status.liquidNote.c_str());
 }
 
 }  // namespace hs::viewer::detail

@@ -104,10 +104,10 @@ TEST_F(CliRender, BloodColouredByOriginOrPressure) {
   CliResult r = renderNoDisplay("normal --times 0 --views front --blood-colour origin --out O --size 320x240", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   expectImages(dir / "O", {"t0_front.png", "contact_sheet.png"}, ventricleViolet, 320, 240);
-  r = renderNoDisplay("normal --times 0.05 --views front --blood-colour pressure --pressure-max 2000 --out P --size 320x240",
+  r = renderNoDisplay("normal --times 0.05 --views front --blood-colour pressure --pressure-max 15 --out P --size 320x240",
                       dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  // Blood at 0 Pa is the bar's blue; the ventricle's systolic pressure paints some of it toward yellow.
+  // Blood at 0 mmHg is the bar's blue; the ventricle's systolic pressure paints some of it toward yellow.
   expectImages(dir / "P", {"t0.05_front.png"}, bloodBlue, 320, 240);
   const hs::viz::Image image = hs::viz::Image::loadPng((dir / "P" / "t0.05_front.png").string());
   EXPECT_GT(countPixels(image, [](hs::viz::Rgb c) { return c.g > 150 && c.r > 150 && c.b < 100; }), 50);
@@ -116,6 +116,44 @@ TEST_F(CliRender, BloodColouredByOriginOrPressure) {
 TEST_F(CliRender, UnknownBloodColourNamesTheValidOnes) {
   expectBadInput("normal --times 0 --blood-colour density --out D", "--blood-colour: unknown colour 'density'; valid: speed, pressure, origin");
   expectBadInput("normal --times 0 --pressure-max -1 --out D", "--pressure-max: must be a finite pressure >= 0");
+}
+
+TEST_F(CliRender, UnknownLookFlowViewAndLabelSetNameTheValidOnes) {
+  expectBadInput("normal --times 0 --blood-look glass --out D", "--blood-look: unknown look 'glass'; valid: liquid, spheres");
+  expectBadInput("normal --times 0 --flow vortices --out D",
+                 "--flow: unknown flow view 'vortices'; valid: off, streaks, arrows");
+  expectBadInput("normal --times 0 --labels all --out D", "--labels: unknown label set 'all'; valid: off, anatomy");
+}
+
+// The default look is the liquid: one smooth surface, so neighbouring pixels of the blood differ
+// far less than those of the same blood drawn as spheres; streaks and labels draw.
+TEST_F(CliRender, LiquidIsTheDefaultLookAndStreaksAndLabelsDraw) {
+  const auto dir = scratchDir("render_looks");
+  CliResult r = renderNoDisplay("fluid-at-rest --times 0 --views front --out L --size 320x240", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  r = renderNoDisplay("fluid-at-rest --times 0 --views front --blood-look spheres --out S --size 320x240", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto bumpiness = [](const hs::viz::Image& image) {
+    long sum = 0;
+    int pairs = 0;
+    for (int y = 0; y < image.height(); ++y)
+      for (int x = 0; x + 1 < image.width(); ++x) {
+        const hs::viz::Rgb a = image.at(x, y), b = image.at(x + 1, y);
+        if (!bloodBlue(a) || !bloodBlue(b)) continue;
+        sum += std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
+        ++pairs;
+      }
+    return pairs > 0 ? double(sum) / pairs : 1e9;
+  };
+  const double liquid = bumpiness(hs::viz::Image::loadPng((dir / "L" / "t0_front.png").string()));
+  const double spheres = bumpiness(hs::viz::Image::loadPng((dir / "S" / "t0_front.png").string()));
+  EXPECT_LT(2 * liquid, spheres) << "liquid " << liquid << ", spheres " << spheres;
+  r = renderNoDisplay("normal --times 0.02 --views front --flow streaks --labels anatomy --out F --size 320x240", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const hs::viz::Image flow = hs::viz::Image::loadPng((dir / "F" / "t0.02_front.png").string());
+  // The labels' paper boxes are white; the streaks carry the speed key's colours.
+  EXPECT_GT(countPixels(flow, [](hs::viz::Rgb c) { return c == hs::viz::Rgb{255, 255, 255}; }), 300);
+  EXPECT_GT(countPixels(flow, bloodBlue), 50);
 }
 
 TEST_F(CliRender, UnknownViewNamesTheValidOnes) {

@@ -135,6 +135,23 @@ TEST(ViewWithoutDisplay, BadResolutionIsExitTwoWithOneLine) {
   }
 }
 
+// --blood-look, --flow and --labels name their valid values; checked before any window.
+TEST(ViewWithoutDisplay, UnknownLookFlowViewAndLabelSetAreExitTwoWithOneLine) {
+  const fs::path dir = scratchDir("view_bad_display_options");
+  ScopedDisplay none(std::nullopt);
+  struct Case {
+    std::string args, message;
+  };
+  for (const Case& c : {Case{"--blood-look glass", "--blood-look: unknown look 'glass'; valid: liquid, spheres"},
+                        Case{"--flow vortices", "--flow: unknown flow view 'vortices'; valid: off, streaks, arrows"},
+                        Case{"--labels all", "--labels: unknown label set 'all'; valid: off, anatomy"}}) {
+    const CliResult r = runHeartsim("view normal --frames 1 " + c.args, dir);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+  }
+}
+
 // A level given runs at once (no start-up measurement): the last line counts its particles.
 TEST_F(ViewUnderXvfb, ResolutionCoarseRunsNormalWithAQuarterOfItsParticles) {
   const fs::path dir = scratchDir("view_coarse");

@@ -8,6 +8,7 @@
 #include "cardiac/heart_simulation.h"
 #include "io/scenario_file.h"
 #include "viewer/camera_controller.h"
+#include "render/scene.h"
 #include "viewer/scene_labels.h"
 
 namespace hs::viewer {
@@ -26,7 +27,7 @@ TEST(SceneLabels, NameTheInflowTheValvesTheAortaAndTheApexWhereTheyAre) {
   const cardiac::Scenario scenario;  // the thesis-scale heart
   const cardiac::HeartSimulation sim(scenario, 1);
   const std::vector<SceneLabel> labels = anatomyLabels(sim);
-  ASSERT_EQ(labels.size(), 5u);
+  ASSERT_EQ(labels.size(), 7u);
   const cardiac::FlowPath& path = sim.model().flowPath;
   const SceneLabel& mitral = named(labels, "mitral");
   const SceneLabel& aortic = named(labels, "aortic");
@@ -75,6 +76,53 @@ TEST(SceneLabels, TheFrontViewShowsTheInflowOnTheLeftAndNothingBehindTheEye) {
   SceneLabel behind = named(labels, "apex");
   behind.anchor = camera.eye + (camera.eye - camera.target);
   EXPECT_FALSE(projectLabel(behind, camera, 1280, 800).onScreen);
+}
+
+}  // namespace
+}  // namespace hs::viewer
+
+namespace hs::viewer {
+namespace {
+
+// The two names the pictures issue added: the left ventricle inside the cavity, the septum on
+// the side the model's AHA septal segments are (its data, not a fixed side), and none at all
+// for the label set "off".
+TEST(SceneLabels, TheVentricleAndTheSeptumComeFromTheModelsSegments) {
+  const cardiac::Scenario scenario;
+  const cardiac::HeartSimulation sim(scenario, 1);
+  const std::vector<SceneLabel> labels = anatomyLabels(sim);
+  const SceneLabel& ventricle = named(labels, "left ventricle");
+  const SceneLabel& septum = named(labels, "septum");
+  const cardiac::LvModel& model = sim.model();
+  double septalX = 0;
+  int count = 0;
+  for (std::size_t v = 0; v < model.segment.size(); ++v)
+    if (model.segment[v] == 2 || model.segment[v] == 3 || model.segment[v] == 8 || model.segment[v] == 9 ||
+        model.segment[v] == 14)
+      septalX += double(sim.particles().position[v].x()), ++count;
+  ASSERT_GT(count, 0);
+  EXPECT_EQ(septum.anchor.x() < ventricle.anchor.x(), septalX / count < double(ventricle.anchor.x()));
+  EXPECT_EQ(model.flowPath.classify(ventricle.anchor.cast<pbd::Real>(), 0, 0), cardiac::FlowRegion::Ventricle);
+  EXPECT_TRUE(render::anatomyLabels(sim, render::LabelSet::Off).empty());
+  EXPECT_EQ(render::parseLabelSet("anatomy"), render::LabelSet::Anatomy);
+  EXPECT_FALSE(render::parseLabelSet("all"));
+}
+
+// Drawn into an image, every label leaves ink near its anchor's projection.
+TEST(SceneLabels, RenderDrawsThemIntoTheImage) {
+  const cardiac::Scenario scenario;
+  const cardiac::HeartSimulation sim(scenario, 1);
+  const std::vector<SceneLabel> labels = anatomyLabels(sim);
+  const render::Camera camera = render::viewCamera(render::View::Front, render::sceneBounds(sim), 4.0f / 3);
+  viz::Image image(400, 300);
+  image.fill({200, 200, 200});
+  render::drawLabels(image, labels, camera);
+  for (const SceneLabel& label : labels) {
+    const ProjectedLabel p = projectLabel(label, camera, 400, 300);
+    ASSERT_TRUE(p.onScreen) << label.text;
+    const viz::Rgb at = image.at(std::clamp(int(p.x), 0, 399), std::clamp(int(p.y), 0, 299));
+    EXPECT_LT(int(at.r) + at.g + at.b, 3 * 150) << label.text << ": the anchor's dot";
+  }
 }
 
 }  // namespace
