@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "cardiac/heart_simulation.h"
+#include "falling_block.h"
 #include "render/scene.h"
 
 namespace {
@@ -49,18 +50,10 @@ TEST(Scene, NormalsPointOutOfTheWall) {
 }
 
 TEST(Scene, BloodIsColouredBySpeedAndTheContainerIsAWireframe) {
-  hs::cardiac::Scenario scenario;
-  scenario.heart = false;
-  scenario.cycle.enabled = false;
-  scenario.blood.enabled = true;
-  scenario.blood.particles = 0;
-  scenario.blood.radius = 0.0025f;
-  scenario.blood.spacing = 0.005f;
-  scenario.blood.supportRadius = 0.01f;
+  // The falling block, resting on the container's floor.
+  hs::cardiac::Scenario scenario = hs::testing::fallingBlock();
   scenario.blood.blockMin = hs::pbd::Vec3(0, 0, 0);
   scenario.blood.blockMax = hs::pbd::Vec3(0.02f, 0.02f, 0.02f);
-  scenario.container.enabled = true;
-  scenario.container.min = hs::pbd::Vec3(0, 0, 0);
   scenario.container.max = hs::pbd::Vec3(0.04f, 0.04f, 0.04f);
   const hs::cardiac::HeartSimulation sim(scenario, 1);
   hs::render::SceneOptions options;
