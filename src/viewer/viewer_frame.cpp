@@ -1,4 +1,5 @@
 // One frame of the viewer (viewer_app_internal.h).
+#include <cfloat>
 #include <epoxy/gl.h>  // before GLFW
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -114,6 +115,9 @@ void ViewerApp::drawFrame(const std::string& captureTo) {
   glfwPollEvents();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  // A scripted run for a picture has no user: the pointer Xvfb leaves in the window's middle
+  // would open the tooltip under it in every screenshot.
+  if (!m_options.screenshot.empty()) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
   ImGui::NewFrame();
   handleInput();
   // The lesson's next action goes into the controls as the panel's would, for applyRequests.
