@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cardiac/heart_activation.h"
+#include "cardiac/patient_lv_model.h"
 #include "pbd/soft_body.h"
 
 namespace hs::cardiac {
@@ -46,7 +47,10 @@ HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
 
 // The wall: the LV model's vertices as the first particles, its constraints, the cycle.
 void HeartSimulation::buildHeart() {
-  m_model.emplace(buildLvModel(m_scenario.geometry));
+  if (m_scenario.patient.kind == ModelKind::Mesh)
+    m_model.emplace(buildPatientLvModel(m_scenario.patient, m_scenario.geometry.wallThickness));
+  else
+    m_model.emplace(buildLvModel(m_scenario.geometry));
   const LvModel& model = *m_model;
   m_firstWallParticle = pbd::addSoftBody(m_particles, m_constraints, model.mesh, model.surface,
                                          softBodySettings(m_scenario.tissue));

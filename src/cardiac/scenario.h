@@ -1,12 +1,14 @@
 #pragma once
 // Everything a run needs, as plain data with physical (SI) units. Scenario files (src/io)
 // fill it; the defaults here are the thesis-scale heart-only case.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cardiac/clinical_units.h"
 #include "cardiac/lumped_circulation.h"
 #include "cardiac/lv_model.h"
+#include "cardiac/patient_wall.h"
 #include "cardiac/volume_driven_wall.h"
 
 namespace hs::cardiac {
@@ -149,6 +151,26 @@ struct CirculationSettings {
   WallMotionSettings wallMotion;
 };
 
+// [model] kind = "mesh": a patient's ventricle from CT/MRI meshes instead of the procedural one
+// (docs/patient-meshes.md). The scenario reader resolves the paths against the scenario file's
+// folder and reads the surfaces into `endocardiumSurface` / `epicardiumSurface`; the heart is
+// built from them (cardiac/patient_lv_model.h). The wall thickness without an epicardium is
+// model.wall_thickness (LvGeometryParams::wallThickness).
+enum class ModelKind : std::uint8_t { Procedural, Mesh };
+struct PatientModelSettings {
+  ModelKind kind = ModelKind::Procedural;
+  std::string endocardium, epicardium, volumeMesh;  // file paths ("" = not given)
+  LengthUnit units = LengthUnit::Millimetre;
+  // The file's surface groups, by name or number ("" = the recognised ENDO/EPI/BASE or 1/2/3).
+  std::string markerEndocardium, markerEpicardium, markerBase;
+  std::string resolution = "default";  // cardiac::wallResolution's names: the edge length
+  Vec3 septum = Vec3::Zero();          // toward the septum in the file's frame; zero = found
+  int mitralLoop = 0, aorticLoop = 0;  // boundary loop numbers of the annuli; 0 = by size
+  // Read from the files by the scenario reader.
+  Surface endocardiumSurface;
+  std::optional<Surface> epicardiumSurface;
+};
+
 struct OutputSettings {
   bool vtk = false;
   int vtkEvery = 10;  // steps between VTK frames
@@ -160,6 +182,7 @@ struct Scenario {
   SimulationSettings simulation;
   bool heart = true;  // model.enabled: the LV wall exists (false: blood in a container only)
   LvGeometryParams geometry;
+  PatientModelSettings patient;
   TissueSettings tissue;
   CycleSettings cycle;
   BloodSettings blood;

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cardiac/patient_wall.h"
+#include "cardiac/scenario.h"
 #include "io/mesh_import.h"
 
 namespace hs::io {
@@ -19,6 +20,18 @@ struct PatientSurfaces {
   std::optional<cardiac::Surface> epicardium;
 };
 
-PatientSurfaces patientSurfaces(const ImportedMesh& mesh, const std::string& file);
+// Markers chosen by the scenario (model.markers): a group's name (any case) or number; ""
+// keeps the recognised names and numbers above.
+struct PatientMarkers {
+  std::string endocardium, epicardium;
+};
+
+PatientSurfaces patientSurfaces(const ImportedMesh& mesh, const std::string& file,
+                                const PatientMarkers& markers = {});
+
+// The surfaces a scenario's [model] kind = "mesh" names (its endocardium and epicardium files,
+// or its volume mesh), read into patient.endocardiumSurface and epicardiumSurface. Throws
+// std::invalid_argument with one line naming the file.
+void readPatientModelFiles(cardiac::PatientModelSettings& patient);
 
 }  // namespace hs::io

@@ -9,6 +9,7 @@
 #include <iterator>
 #include <limits>
 
+#include "io/patient_surfaces.h"
 #include "io/scenario_internal.h"
 
 namespace hs::io {
@@ -19,12 +20,16 @@ using detail::KeySpec;
 using detail::TableSpec;
 using detail::ValueError;
 
+using pbd::Real;
+
 // Messages are one line: newlines (e.g. from a parser description) become spaces.
 [[noreturn]] void fail(std::string message) {
   std::replace(message.begin(), message.end(), '\n', ' ');
   std::replace(message.begin(), message.end(), '\r', ' ');
   throw ScenarioError(message);
 }
+
+std::string quoteOrEmpty(const std::string& text) { return text.empty() ? "nothing" : "'" + text + "'"; }
 
 std::uint32_t lineOf(const toml::node& node) {
   std::uint32_t line = node.source().begin.line;
@@ -53,6 +58,8 @@ struct ParseState {
   std::string sphereOrigin;  // where [cycle.sphere] was enabled, for the final check
   std::string source;        // the file (or built-in) name
   std::map<std::string, std::string, std::less<>> keyOrigin;  // "file:line" of each key set
+  std::filesystem::path fileDir;  // the scenario file's folder: relative paths start there
+  std::map<std::string, std::filesystem::path, std::less<>> keyDir;  // per key set: where its paths start
 
   // Where `key` was last set, or the file name when it kept its default.
   std::string at(std::string_view key) const {
@@ -88,6 +95,7 @@ void applyLeaf(ParseState& st, const std::string& dotted, const toml::node& node
     fail(origin.at(e.line != 0 ? e.line : line) + ": " + dotted + ": " + e.message);
   }
   st.keyOrigin[dotted] = origin.at(line);
+  st.keyDir[dotted] = origin.isFile ? st.fileDir : std::filesystem::path();  // --set: the working directory
   markPresent(st, dotted, origin.at(line));
 }
 
@@ -223,6 +231,49 @@ void validate(const ParseState& st) {
   }
 }
 
+// [model] kind = "mesh": the paths made absolute from where each was set (the scenario file's
+// folder, or the working directory for --set), the unset wall thickness a real heart's, and
+// the files read, so that a missing or bad mesh stops the run here with its key.
+void resolveMeshModel(ParseState& st) {
+  cardiac::PatientModelSettings& p = st.scenario.patient;
+  if (p.kind != cardiac::ModelKind::Mesh) return;
+  const std::pair<const char*, std::string*> paths[] = {
+      {"model.endocardium", &p.endocardium}, {"model.epicardium", &p.epicardium}, {"model.volume_mesh", &p.volumeMesh}};
+  for (const auto& [key, path] : paths) {
+    if (path->empty()) continue;
+    const auto dir = st.keyDir.find(key);
+    const std::filesystem::path base = dir != st.keyDir.end() ? dir->second : std::filesystem::path();
+    std::error_code ec;
+    const std::filesystem::path full = std::filesystem::absolute(base / *path, ec);
+    *path = (ec ? base / *path : full).lexically_normal().string();
+  }
+  const std::string kindAt = st.at("model.kind") + ": ";
+  if (p.endocardium.empty() == p.volumeMesh.empty())
+    fail(kindAt + "model.endocardium: expected exactly one of model.endocardium (a surface file) and "
+                  "model.volume_mesh when model.kind = \"mesh\", got " +
+         (p.endocardium.empty() ? "neither" : "both"));
+  if (!p.volumeMesh.empty() && !p.epicardium.empty())
+    fail(st.at("model.epicardium") + ": model.epicardium: expected no epicardium file with model.volume_mesh "
+                                     "(its markers give the epicardium), got " + quoteOrEmpty(p.epicardium));
+  if (st.keyOrigin.find("model.wall_thickness") == st.keyOrigin.end()) st.scenario.geometry.wallThickness = Real(0.010);
+  const double t = double(st.scenario.geometry.wallThickness);
+  if (!(t >= 0.002 && t <= 0.03))
+    fail(st.at("model.wall_thickness") + ": model.wall_thickness: must be within [0.002, 0.03] m for a patient's "
+                                         "wall (model.kind = \"mesh\"), got " + detail::formatNumber(t));
+  if (st.scenario.blood.enabled)
+    fail(st.at("blood.enabled") + ": blood.enabled: expected false with model.kind = \"mesh\" (a patient's heart "
+                                  "beats without blood for now), got true");
+  if (st.scenario.circulation.lumped)
+    fail(st.at("circulation.lumped") + ": circulation.lumped: expected false with model.kind = \"mesh\" (a "
+                                       "patient's heart beats with heartsim's own cycle for now), got true");
+  const char* key = p.volumeMesh.empty() ? "model.endocardium" : "model.volume_mesh";
+  try {
+    io::readPatientModelFiles(p);
+  } catch (const std::invalid_argument& e) {
+    fail(st.at(key) + std::string(": ") + key + ": " + e.what());
+  }
+}
+
 std::string builtinList() {
   std::string list;
   for (const auto& e : detail::embeddedScenarios()) list += (list.empty() ? "" : ", ") + std::string(e.name);
@@ -231,10 +282,13 @@ std::string builtinList() {
 
 }  // namespace
 
-Scenario parseScenario(std::string_view tomlText, const std::string& sourceName,
-                       const std::vector<std::string>& overrides) {
+namespace {
+
+Scenario parseScenarioIn(std::string_view tomlText, const std::string& sourceName,
+                         const std::vector<std::string>& overrides, const std::filesystem::path& fileDir) {
   ParseState st;
   st.source = sourceName;
+  st.fileDir = fileDir;
   const std::string stem = std::filesystem::path(sourceName).stem().string();
   if (!stem.empty()) st.scenario.name = stem;
 
@@ -244,7 +298,15 @@ Scenario parseScenario(std::string_view tomlText, const std::string& sourceName,
   applyTable(st, root, "", Origin{sourceName, true});
   for (const std::string& o : overrides) applyOverride(st, o);
   validate(st);
+  resolveMeshModel(st);
   return st.scenario;
+}
+
+}  // namespace
+
+Scenario parseScenario(std::string_view tomlText, const std::string& sourceName,
+                       const std::vector<std::string>& overrides) {
+  return parseScenarioIn(tomlText, sourceName, overrides, std::filesystem::path(sourceName).parent_path());
 }
 
 std::vector<std::string> builtinScenarioNames() {
@@ -262,7 +324,10 @@ std::string builtinScenarioText(const std::string& name) {
 
 Scenario loadScenario(const std::string& nameOrPath, const std::vector<std::string>& overrides) {
   for (const auto& e : detail::embeddedScenarios())
-    if (e.name == nameOrPath) return parseScenario(e.text, "scenarios/" + nameOrPath + ".toml", overrides);
+    // A built-in's relative paths (its meshes) start in the source tree's scenarios folder,
+    // from whatever directory heartsim runs in.
+    if (e.name == nameOrPath)
+      return parseScenarioIn(e.text, "scenarios/" + nameOrPath + ".toml", overrides, HS_SCENARIO_SOURCE_DIR);
 
   std::error_code ec;
   const std::filesystem::path path(nameOrPath);

@@ -320,7 +320,7 @@ std::vector<KeySpec> buildKeyTable() {
   using SectionKeys = std::vector<KeySpec> (*)();
   std::vector<KeySpec> table;
   for (const SectionKeys section :
-       {&scenarioKeys, &simulationKeys, &modelKeys, &tissueKeys, &cycleKeys, &cycleSphereKeys,
+       {&scenarioKeys, &simulationKeys, &modelKeys, &meshModelKeys, &tissueKeys, &cycleKeys, &cycleSphereKeys,
         &cycleInconsistentKeys, &bloodKeys, &containerKeys, &circulationKeys, &lumpedCirculationKeys, &outputKeys}) {
     std::vector<KeySpec> rows = section();
     std::move(rows.begin(), rows.end(), std::back_inserter(table));
@@ -340,6 +340,7 @@ const std::vector<TableSpec>& tableTable() {
       {"scenario", nullptr, nullptr},
       {"simulation", nullptr, nullptr},
       {"model", nullptr, nullptr},
+      {"model.markers", nullptr, nullptr},
       {"tissue", nullptr, nullptr},
       {"cycle", nullptr, nullptr},
       {"cycle.sphere", [](Scenario& s) { s.cycle.sphereEnabled = true; },

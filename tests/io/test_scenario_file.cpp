@@ -184,6 +184,20 @@ std::vector<KeyCase> everyKeyCase() {
       {"model.outflow_vessel_length", "1.3",
        [](const Scenario& s) { return s.geometry.outflowVesselLength == Real(1.3); }},
       {"model.resolution", "2", [](const Scenario& s) { return s.geometry.resolution == Real(2); }},
+      {"model.kind", "\"mesh\"", [](const Scenario& s) { return s.patient.kind == cardiac::ModelKind::Mesh; }},
+      {"model.endocardium", "\"lv/endo.obj\"", [](const Scenario& s) { return s.patient.endocardium == "lv/endo.obj"; }},
+      {"model.epicardium", "\"lv/epi.obj\"", [](const Scenario& s) { return s.patient.epicardium == "lv/epi.obj"; }},
+      {"model.volume_mesh", "\"lv.msh\"", [](const Scenario& s) { return s.patient.volumeMesh == "lv.msh"; }},
+      {"model.units", "\"m\"", [](const Scenario& s) { return s.patient.units == cardiac::LengthUnit::Metre; }},
+      {"model.mesh_resolution", "\"fine\"", [](const Scenario& s) { return s.patient.resolution == "fine"; }},
+      {"model.septum", "[1.0, 0.0, 0.5]",
+       [](const Scenario& s) { return s.patient.septum == Vec3(1, 0, Real(0.5)); }},
+      {"model.mitral_loop", "2", [](const Scenario& s) { return s.patient.mitralLoop == 2; }},
+      {"model.aortic_loop", "1", [](const Scenario& s) { return s.patient.aorticLoop == 1; }},
+      {"model.markers.endocardium", "\"LV_ENDO\"",
+       [](const Scenario& s) { return s.patient.markerEndocardium == "LV_ENDO"; }},
+      {"model.markers.epicardium", "7", [](const Scenario& s) { return s.patient.markerEpicardium == "7"; }},
+      {"model.markers.base", "\"Base\"", [](const Scenario& s) { return s.patient.markerBase == "Base"; }},
       {"simulation.volume_passes", "5", [](const Scenario& s) { return s.simulation.volumePasses == 5; }},
       {"tissue.stiffness", "0.75", [](const Scenario& s) { return s.tissue.stiffness == Real(0.75); }},
       {"tissue.volume_stiffness", "0.25", [](const Scenario& s) { return s.tissue.volumeStiffness == Real(0.25); }},
@@ -312,9 +326,21 @@ TEST(ScenarioFile, EveryKeyRoundTripsThroughSet) {
     covered.insert(c.key);
     std::vector<std::string> overrides = {c.key + "=" + c.value};
     if (c.key == "cycle.sphere.centre") overrides.push_back("cycle.sphere.radius=1");
+    // A mesh heart needs its file (read as the scenario is) and beats without blood: its kind
+    // round-trips here alone, with the biv-me endocardium, and stays out of the all-at-once set.
+    const bool meshKind = c.key == "model.kind";
+    if (meshKind) {
+      overrides.push_back("model.endocardium=" + std::string(HS_TEST_DATA_DIR) +
+                          "/meshes/bivme_patient1/patient1_LV_ENDOCARDIAL_000.obj");
+      overrides.push_back("model.wall_thickness=0.01");  // heart-only's is the thesis's 0.5 m
+    }
     const Scenario s = loadScenario("heart-only", overrides);
     EXPECT_TRUE(c.check(s));
     EXPECT_FALSE(c.check(loadScenario("heart-only"))) << "the case value equals the default";
+    if (meshKind) {
+      EXPECT_TRUE(c.check(parseScenario(scenarioToToml(s), "dump.toml")));
+      continue;
+    }
     all.push_back(overrides.front());
   }
   for (const ScenarioKeyInfo& k : scenarioKeys()) EXPECT_EQ(covered.count(k.name), 1u) << k.name;
@@ -322,10 +348,11 @@ TEST(ScenarioFile, EveryKeyRoundTripsThroughSet) {
 
   // All at once, then through scenarioToToml and back: nothing is lost.
   const Scenario s = loadScenario("heart-only", all);
-  for (const KeyCase& c : cases) EXPECT_TRUE(c.check(s)) << c.key;
+  auto inAll = [](const KeyCase& c) { return c.key != "model.kind"; };
+  for (const KeyCase& c : cases) EXPECT_TRUE(!inAll(c) || c.check(s)) << c.key;
   const std::string text = scenarioToToml(s);
   const Scenario back = parseScenario(text, "dump.toml");
-  for (const KeyCase& c : cases) EXPECT_TRUE(c.check(back)) << c.key << "\n" << text;
+  for (const KeyCase& c : cases) EXPECT_TRUE(!inAll(c) || c.check(back)) << c.key << "\n" << text;
   EXPECT_EQ(scenarioToToml(back), text);
 }
 
