@@ -2,6 +2,8 @@
 // paths found from the scenario file, and the two built-in patient hearts built and beating.
 #include <gtest/gtest.h>
 
+#include "thrown_message.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -21,15 +23,8 @@ using cardiac::Scenario;
 const std::string kData = HS_TEST_DATA_DIR;
 const std::string kBivmeEndo = kData + "/meshes/bivme_patient1/patient1_LV_ENDOCARDIAL_000.obj";
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const ScenarioError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no ScenarioError";
-  return "";
-}
+// The ScenarioError message of f(), or fails the test.
+std::string errorOf(const std::function<void()>& f) { return hs::testing::thrownMessage<ScenarioError>(f); }
 
 // parseScenario(text) fails with one line holding every piece.
 void expectError(const std::string& text, const std::vector<std::string>& pieces) {
