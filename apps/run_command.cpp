@@ -195,6 +195,7 @@ int runCommand(const RunOptions& options) {
   cardiac::MonitorSettings settings;
   settings.everyColumn = true;
   settings.endTime = double(*steps) * double(scenario->simulation.dt);
+  settings.limits.bloodLost = std::size_t(scenario->blood.lossAllowed);  // more lost: exit 3, when and where
   cardiac::RunMonitor monitor(*sim, settings);
   try {
     if (resumed) io::restoreMonitor(resumed->checkpoint, monitor, options.resume);

@@ -229,7 +229,7 @@ BloodStats measureBlood(const pbd::Particles& particles, const pbd::FluidStats& 
     const Vec3& x = particles.position[i];
     bool out = !x.allFinite() || !particles.velocity[i].allFinite();
     for (int a = 0; a < 3 && !out; ++a) out = x[a] < domainMin[a] || x[a] > domainMax[a];
-    if (out) ++stats.lost;
+    if (out && stats.lost++ == 0) stats.firstLostAt = x;
   }
   return stats;
 }

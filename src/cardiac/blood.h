@@ -47,6 +47,8 @@ struct BloodStats {
   std::size_t particles = 0;
   // Particles outside the domain (the container or the heart's surroundings) or non-finite.
   std::size_t lost = 0;
+  // Where the first of them is (the failure's message names it); not saved in checkpoints.
+  Vec3 firstLostAt = Vec3::Zero();
   // |rho/rho0 - 1| over particles with a full neighbourhood (pbd::measureFluid).
   double densityErrorMean = 0;
   double densityErrorMax = 0;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -26,6 +27,25 @@ pbd::SoftBodySettings softBodySettings(const TissueSettings& tissue) {
   s.edges = tissue.edges;
   s.areas = tissue.areas;
   return s;
+}
+
+// The most a beating vertex may travel inward in one systole (cycle.contraction, physiological
+// mode), as a share of the cavity's size (the radius of a sphere of the cavity's rest volume):
+// beyond it the one-tet-thick wall folds and its tets invert. Measured on `normal` without the
+// lumped circulation (docs/reliability.md): 0.30 of that radius beats for 10 s, 0.35 inverts.
+constexpr double kMaxContractionShare = 1.0 / 3.0;
+
+void checkContraction(const CycleSettings& cycle, const LvModel& model) {
+  if (!cycle.enabled || cycle.mode != TimingMode::Physiological) return;
+  const double volume = double(cavityVolume(model, model.mesh.vertices));
+  const double size = std::cbrt(3 * volume / (4 * std::numbers::pi));
+  const double limit = kMaxContractionShare * size;
+  if (double(cycle.contraction) <= limit) return;
+  std::ostringstream message;
+  message.precision(3);
+  message << "cycle.contraction: " << double(cycle.contraction) << " m folds this wall; expected at most " << limit
+          << " m, a third of the cavity's size (" << size << " m, the radius of a sphere of its volume)";
+  throw std::invalid_argument(message.str());
 }
 
 }  // namespace
@@ -59,6 +79,7 @@ void HeartSimulation::buildHeart() {
   if (m_scenario.circulation.lumped) {
     buildLumpedCirculation();
   } else {
+    checkContraction(m_scenario.cycle, model);
     m_cycle.emplace(m_scenario.cycle, model, m_firstWallParticle);
   }
   assert(m_firstWallParticle == 0 && "cavityVolume reads particle positions as model vertices");
@@ -85,9 +106,24 @@ void HeartSimulation::buildLumpedCirculation() {
   cycle.irregularBothWays = true;
   m_cycle.emplace(cycle, model, m_firstWallParticle);
   m_regionShares = regionShares(*m_cycle, model, m_firstWallParticle);
+  // The lumped valves open and close on the lumped pressures: valves by pressure, whatever the
+  // 3D blood's gauge says. Another mode would be silently ignored, so it is refused.
+  if (c.valveMode != ValveMode::Pressure)
+    throw std::invalid_argument(std::string("circulation.valves: with circulation.lumped = true the valves open and "
+                                            "close on the lumped circulation's pressures; expected \"pressure\", got \"") +
+                                (c.valveMode == ValveMode::Timing ? "timing" : "open") + "\"");
   m_drivenWall.emplace(model, selectBeatingVertices(cycle, model), m_firstWallParticle, c.wallMotion);
   // The driven wall is kinematic: its motion is the contraction's, not its constraints'.
   for (Index v : m_drivenWall->drivenVertices()) m_particles.inverseMass[m_firstWallParticle + v] = 0;
+  // Two-way coupling moves only vertices with mass: where the lumped circulation drives all of
+  // them, the switch would change nothing, so it is refused rather than ignored.
+  const auto firstWall = m_particles.inverseMass.begin() + m_firstWallParticle;
+  if (c.twoWay && std::none_of(firstWall, firstWall + std::ptrdiff_t(model.mesh.vertices.size()),
+                               [](Real w) { return w > 0; }))
+    throw std::invalid_argument(
+        "circulation.two_way: the lumped circulation drives every vertex of this wall (its volume sets the "
+        "wall's shape), so the blood cannot push it back; two-way coupling needs circulation.lumped = false or "
+        "segments that do not beat (cycle.segments)");
 
   LumpedParameters p = c.lumpedParameters;
   constexpr double pi = std::numbers::pi;
@@ -129,6 +165,25 @@ void HeartSimulation::findDomain() {
 // The blood particles after the wall, its solver and, with a heart, the wall contact and the
 // circulation.
 void HeartSimulation::buildBlood() {
+  // A start block beyond the domain would be lost at the first step (after filling a lattice
+  // sized for another scene): refused before any work.
+  const BloodSettings& b = m_scenario.blood;
+  if (b.start == BloodSettings::Start::Block &&
+      ((b.blockMin.array() < m_domainMin.array()).any() || (b.blockMax.array() > m_domainMax.array()).any())) {
+    std::ostringstream message;
+    message.precision(3);
+    const auto box = [&](const Vec3& lo, const Vec3& hi) {
+      message << "[" << lo.x() << ", " << lo.y() << ", " << lo.z() << "]..[" << hi.x() << ", " << hi.y() << ", "
+              << hi.z() << "] m";
+    };
+    message << "blood.block_min, blood.block_max: the start block ";
+    box(b.blockMin, b.blockMax);
+    message << " reaches outside the domain the blood may stay in, ";
+    box(m_domainMin, m_domainMax);
+    message << (m_model ? " (around the heart); put it inside or choose another blood.start"
+                        : " (the container); put it inside");
+    throw std::invalid_argument(message.str());
+  }
   // The start block first: it checks the particle count against memory before anything else
   // is allocated; then the solver settings check the remaining parameters.
   const std::vector<pbd::Vec3> start = bloodStartPositions(m_scenario, m_model ? &*m_model : nullptr);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -19,31 +20,35 @@ void require(bool ok, const char* key, double value, const char* range) {
   throw std::invalid_argument(message.str());
 }
 
+// value <= limit, allowing the float rounding of the scenario's SI fields: a value the file gave
+// as exactly the limit in clinical units comes back from its float SI field a rounding above it.
+bool atMost(double value, double limit) { return value <= limit * (1 + 4.0 * std::numeric_limits<float>::epsilon()); }
+
 }  // namespace
 
 void validateLumpedParameters(const LumpedParameters& p) {
   // Clinical units in the messages: what the scenario file holds.
-  require(p.contractility > 0 && elastanceToClinical(p.contractility) <= 20, "circulation.contractility_mmhg_per_ml",
+  require(p.contractility > 0 && atMost(elastanceToClinical(p.contractility), 20), "circulation.contractility_mmhg_per_ml",
           elastanceToClinical(p.contractility), "> 0 and <= 20 mmHg/mL");
-  require(p.peripheralResistance > 0 && resistanceToClinical(p.peripheralResistance) <= 20,
+  require(p.peripheralResistance > 0 && atMost(resistanceToClinical(p.peripheralResistance), 20),
           "circulation.peripheral_resistance_mmhg_s_per_ml", resistanceToClinical(p.peripheralResistance),
           "> 0 and <= 20 mmHg s/mL");
-  require(p.arterialCompliance > 0 && complianceToClinical(p.arterialCompliance) <= 20,
+  require(p.arterialCompliance > 0 && atMost(complianceToClinical(p.arterialCompliance), 20),
           "circulation.arterial_compliance_ml_per_mmhg", complianceToClinical(p.arterialCompliance),
           "> 0 and <= 20 mL/mmHg");
-  require(p.characteristicImpedance >= 0 && resistanceToClinical(p.characteristicImpedance) <= 1,
+  require(p.characteristicImpedance >= 0 && atMost(resistanceToClinical(p.characteristicImpedance), 1),
           "circulation.characteristic_impedance_mmhg_s_per_ml", resistanceToClinical(p.characteristicImpedance),
           ">= 0 and <= 1 mmHg s/mL");
-  require(p.pulmonaryVenousPressure >= 0 && p.pulmonaryVenousPressure <= 100 * kPascalPerMmHg,
+  require(p.pulmonaryVenousPressure >= 0 && atMost(p.pulmonaryVenousPressure, 100 * kPascalPerMmHg),
           "circulation.atrial_pressure_mmhg", p.pulmonaryVenousPressure / kPascalPerMmHg, ">= 0 and <= 100 mmHg");
-  require(p.systemicVenousPressure >= 0 && p.systemicVenousPressure <= 30 * kPascalPerMmHg,
+  require(p.systemicVenousPressure >= 0 && atMost(p.systemicVenousPressure, 30 * kPascalPerMmHg),
           "circulation.venous_pressure_mmhg", p.systemicVenousPressure / kPascalPerMmHg, ">= 0 and <= 30 mmHg");
-  require(p.unstressedVolume >= 0 && p.unstressedVolume <= 200 * kCubicMetresPerMl, "circulation.lv_v0_ml",
+  require(p.unstressedVolume >= 0 && atMost(p.unstressedVolume, 200 * kCubicMetresPerMl), "circulation.lv_v0_ml",
           p.unstressedVolume / kCubicMetresPerMl, ">= 0 and <= 200 mL");
-  require(p.diastolicScale > 0 && p.diastolicScale <= 20 * kPascalPerMmHg, "circulation.lv_stiffness_mmhg",
+  require(p.diastolicScale > 0 && atMost(p.diastolicScale, 20 * kPascalPerMmHg), "circulation.lv_stiffness_mmhg",
           p.diastolicScale / kPascalPerMmHg, "> 0 and <= 20 mmHg");
-  require(p.diastolicExponent > 0 && p.diastolicExponent * kCubicMetresPerMl <= 0.5, "circulation.lv_stiffness_per_ml",
-          p.diastolicExponent * kCubicMetresPerMl, "> 0 and <= 0.5 per mL");
+  require(p.diastolicExponent > 0 && atMost(p.diastolicExponent * kCubicMetresPerMl, 0.05),
+          "circulation.lv_stiffness_per_ml", p.diastolicExponent * kCubicMetresPerMl, "> 0 and <= 0.05 per mL");
   require(p.mitralArea > 0, "model.mitral_radius", p.mitralArea, "an orifice of positive area");
   require(p.aorticArea > 0, "circulation.aortic_valve_area_cm2", p.aorticArea * 1e4, "> 0 cm^2");
   require(p.mitralRegurgitantArea >= 0 && p.mitralRegurgitantArea <= p.mitralArea,

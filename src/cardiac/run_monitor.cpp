@@ -52,10 +52,14 @@ HealthIssue checkTissue(const TissueStats& tissue, bool cavityFinite, const LvMo
 }
 
 HealthIssue checkBlood(const BloodStats& blood, const HealthLimits& limits) {
-  if (blood.lost > limits.bloodLost)
-    return {HealthCheck::BloodLost, std::to_string(blood.lost) + " of " + std::to_string(blood.particles) +
-                                        " blood particles lost outside the domain (limit " +
-                                        std::to_string(limits.bloodLost) + ")"};
+  if (blood.lost > limits.bloodLost) {
+    std::ostringstream s;
+    s.precision(3);
+    const Vec3& x = blood.firstLostAt;
+    s << blood.lost << " of " << blood.particles << " blood particles lost outside the domain (first at x = " << x.x()
+      << ", y = " << x.y() << ", z = " << x.z() << " m; blood.loss_allowed = " << limits.bloodLost << ")";
+    return {HealthCheck::BloodLost, s.str()};
+  }
   if (blood.insideWall > limits.bloodInsideWall)
     return {HealthCheck::BloodInsideWall, std::to_string(blood.insideWall) + " of " +
                                               std::to_string(blood.particles) +

@@ -119,6 +119,9 @@ struct BloodSettings {
   enum class Start { Block, Chamber, Vessel, Heart } start = Start::Block;
   Vec3 blockMin = Vec3(Real(-0.8), Real(-2.4), Real(-0.8));  // m, the block the particles start in
   Vec3 blockMax = Vec3(Real(0.8), Real(-0.8), Real(0.8));
+  // Particles that may leave the domain before a run fails (exit 3): 0, any loss is a failure;
+  // a scenario whose blood is meant to spill says how much it expects.
+  int lossAllowed = 0;
 };
 
 // A closed box the blood cannot leave (dam break, column at rest). Its walls are planes

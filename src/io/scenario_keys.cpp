@@ -223,6 +223,10 @@ std::vector<KeySpec> bloodKeys() {
       vec3Key("blood.block_min", HS_FIELD(blood.blockMin), kMetres,
               "Lower corner of the block the blood starts in."),
       vec3Key("blood.block_max", HS_FIELD(blood.blockMax), kMetres, "Upper corner of that block."),
+      intKey("blood.loss_allowed", HS_FIELD(blood.lossAllowed), 0, "",
+             "Blood particles that may leave the domain before `heartsim run` stops with exit 3, naming when "
+             "and where; 0: any loss is a failure.",
+             10'000'000),
   };
 }
 
@@ -279,7 +283,9 @@ std::vector<KeySpec> lumpedCirculationKeys() {
       clinicalKey("circulation.lv_stiffness_mmhg", HS_FIELD(circulation.lumpedParameters.diastolicScale), mmHg,
                   gtLe(0, 20), "mmHg", "A of the end-diastolic relation P = A (exp(B (V - V0)) - 1)."),
       clinicalKey("circulation.lv_stiffness_per_ml", HS_FIELD(circulation.lumpedParameters.diastolicExponent),
-                  1 / mL, gtLe(0, 0.5), "1/mL", "B of the end-diastolic relation: the ventricle's stiffness."),
+                  1 / mL, gtLe(0, 0.05), "1/mL",
+                  "B of the end-diastolic relation: the ventricle's stiffness (beyond 0.05 the relaxed "
+                  "ventricle's pressure at its rest volume is hundreds of mmHg and throws the blood about)."),
       clinicalKey("circulation.peripheral_resistance_mmhg_s_per_ml",
                   HS_FIELD(circulation.lumpedParameters.peripheralResistance), resistance, gtLe(0, 20),
                   "mmHg s/mL", "Afterload: systemic peripheral resistance of the Windkessel."),

@@ -131,6 +131,16 @@ void drawBloodSection(BloodControls& c, const ResolutionStatus& resolution, bool
       "Where the blood is at t = 0: in the inflow vessel (it fills the ventricle through the mitral "
       "valve), already in the chamber, or filling the heart and both vessels (what the lumped "
       "circulation needs: it moves the wall from the first step). Restarts from t = 0.");
+  if (wallDriven) {
+    // The lumped circulation drives the wall and opens the valves on its own pressures: the
+    // coupling and valve switches would change nothing here (the simulation refuses them).
+    ImGui::TextDisabled("coupling and valves: the circulation model's (?)");
+    tooltip(
+        "The circulation model moves the whole wall and opens each valve when the pressure before it is "
+        "higher than after it, so two-way coupling and the valve modes do not apply to this heart. A "
+        "scenario without the circulation model (e.g. heart-only) offers them.");
+    return;
+  }
   if (ImGui::Checkbox("two-way coupling", &c.twoWay)) c.changed = true;
   tooltip(
       "On: the blood pushes the heart wall back (the wall feels the blood's pressure).\nOff: the wall "

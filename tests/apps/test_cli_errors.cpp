@@ -131,5 +131,66 @@ TEST(CliErrors, BeatingRegionThatSelectsNothingIsBadInput) {
                  {"heart-only", "cycle.sphere", "selects no wall vertex"});
 }
 
+// Switches that the lumped circulation would silently ignore are refused, naming why.
+TEST(CliErrors, SwitchesTheLumpedCirculationCannotHonourAreBadInput) {
+  const auto dir = scratchDir("lumped_switches");
+  expectBadInput(runHeartsim("run normal --set circulation.valves=timing", dir),
+                 {"normal", "circulation.valves", "lumped circulation's pressures", "expected \"pressure\", got \"timing\""});
+  expectBadInput(runHeartsim("run irregular --set circulation.valves=open", dir), {"circulation.valves", "got \"open\""});
+  expectBadInput(runHeartsim("run normal --set circulation.two_way=true", dir),
+                 {"normal", "circulation.two_way", "drives every vertex", "circulation.lumped = false"});
+}
+
+// Without the lumped circulation the wall travels cycle.contraction per systole: the default
+// 0.3 m on a 3 cm heart folds it, so it is refused before any work, naming the limit.
+TEST(CliErrors, AContractionThatFoldsTheWallIsBadInput) {
+  const auto dir = scratchDir("contraction");
+  expectBadInput(runHeartsim("run normal --set circulation.lumped=false", dir),
+                 {"normal", "cycle.contraction", "0.3 m folds this wall", "at most 0.0104 m", "a third of the cavity"});
+  expectBadInput(runHeartsim("run normal --set circulation.lumped=false --set cycle.contraction=0.011", dir),
+                 {"cycle.contraction", "0.011 m"});
+}
+
+// Blood leaving the domain stops `run` with exit 3, when and where, and the summary; a scenario
+// that expects the loss says so (blood.loss_allowed).
+TEST(CliErrors, LostBloodIsExitThreeUnlessTheScenarioAllowsIt) {
+  const auto dir = scratchDir("lost_blood");
+  // A strong upward gravity throws the heart's blood out through its vessels' open ends.
+  const std::string throwOut = "run normal --set circulation.lumped=false --set cycle.contraction=0.0095 "
+                               "--set circulation.loop=false --set blood.particles=3000 "
+                               "--set 'simulation.gravity=[0, 350, 0]' --duration 0.05";
+  const CliResult r = runHeartsim(throwOut + " --json", dir);
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  for (const char* word : {"simulation became invalid at step", "blood particles lost outside the domain", "first at x = ",
+                           "blood.loss_allowed = 0"})
+    EXPECT_NE(r.err.find(word), std::string::npos) << "missing '" << word << "' in: " << r.err;
+  EXPECT_NE(readFile(dir / "results" / "normal" / "summary.json").find("lost outside the domain"), std::string::npos);
+  const CliResult allowed = runHeartsim(throwOut + " --set blood.loss_allowed=3000 --out ok", dir);
+  EXPECT_EQ(allowed.exitCode, 0) << allowed.err;
+}
+
+// A start block outside the heart's surroundings is refused before any work.
+TEST(CliErrors, AStartBlockOutsideTheDomainIsBadInput) {
+  const auto dir = scratchDir("block_outside");
+  expectBadInput(runHeartsim("run normal --set blood.start=block", dir),
+                 {"normal", "blood.block_min, blood.block_max", "[-0.8, -2.4, -0.8]..[0.8, -0.8, 0.8] m",
+                  "reaches outside the domain"});
+}
+
+// A documented limit is a value that works: the lumped circulation's keys at their upper ends
+// (kept in float SI, checked again in clinical units) run.
+TEST(CliErrors, TheLumpedKeysAcceptTheirDocumentedLimits) {
+  const auto dir = scratchDir("lumped_limits");
+  for (const char* set : {"circulation.contractility_mmhg_per_ml=20", "circulation.peripheral_resistance_mmhg_s_per_ml=20",
+                          "circulation.arterial_compliance_ml_per_mmhg=20", "circulation.characteristic_impedance_mmhg_s_per_ml=1",
+                          "circulation.atrial_pressure_mmhg=100", "circulation.venous_pressure_mmhg=30", "circulation.lv_v0_ml=200",
+                          "circulation.lv_stiffness_mmhg=20", "circulation.lv_stiffness_per_ml=0.05"}) {
+    const CliResult r = runHeartsim(std::string("run normal --duration 0.001 --threads 1 --out o --set ") + set, dir);
+    EXPECT_EQ(r.exitCode, 0) << set << ": " << r.err;
+  }
+}
+
 }  // namespace
 }  // namespace hs::testing

@@ -273,6 +273,7 @@ std::vector<KeyCase> everyKeyCase() {
       {"blood.block_min", "[-1.0, -3.0, -1.0]",
        [](const Scenario& s) { return s.blood.blockMin == Vec3(-1, -3, -1); }},
       {"blood.block_max", "[1.0, 0.0, 1.0]", [](const Scenario& s) { return s.blood.blockMax == Vec3(1, 0, 1); }},
+      {"blood.loss_allowed", "12", [](const Scenario& s) { return s.blood.lossAllowed == 12; }},
       {"container.enabled", "true", [](const Scenario& s) { return s.container.enabled; }},
       {"container.min", "[-2.0, -4.0, -2.0]", [](const Scenario& s) { return s.container.min == Vec3(-2, -4, -2); }},
       {"container.max", "[2.0, 1.5, 2.0]", [](const Scenario& s) { return s.container.max == Vec3(2, 1.5, 2); }},
