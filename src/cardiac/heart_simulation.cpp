@@ -194,6 +194,12 @@ void HeartSimulation::buildBlood() {
     std::vector<std::uint8_t> wetted(m_model->mesh.vertices.size(), 0);
     for (std::size_t v = 0; v < wetted.size(); v += 2) wetted[v] = 1;
     m_wallContact->setWettedVertices(wetted);
+    // Two-way, the blood pushes the myocardium back; the base plate and the vessels, thin and
+    // light, are held as the body holds them (many particles pressing on one light vertex at
+    // once over-push it: an outflow-vessel tet inverted at 0.2 s of `normal`, docs/heart-blood.md).
+    std::vector<std::uint8_t> yielding(m_model->mesh.vertices.size(), 0);
+    for (std::size_t v = 0; v < yielding.size(); ++v) yielding[v] = m_model->region[v] == Region::Myocardium;
+    m_wallContact->setYieldingVertices(std::move(yielding));
     // The wall's whole boundary (outward, particle ids: the wall is the first body), for the
     // swept check of every blood step against the moving wall (pbd/swept_contact.h).
     if (m_scenario.blood.wallContact == BloodSettings::WallContact::Continuous)

@@ -349,7 +349,9 @@ std::size_t ParticleTetCollider::resolve(Particles& particles, Index first, Inde
     if (!pushOut(p, particles.position, x, particles.position[i], settings, contact)) continue;
     ++moved;
     if (settings.twoWay) {
-      const std::array<Real, 3> wallW{w[contact.vertices[0]], w[contact.vertices[1]], w[contact.vertices[2]]};
+      const std::array<Real, 3> wallW{yieldingInverseMass(w, contact.vertices[0]),
+                                      yieldingInverseMass(w, contact.vertices[1]),
+                                      yieldingInverseMass(w, contact.vertices[2])};
       const TwoWayPushOut split = splitPushOut(x - p[i], w[i], contact.weights, wallW);
       if (split.shared) {
         x = p[i] + split.particle;
@@ -364,7 +366,7 @@ std::size_t ParticleTetCollider::resolve(Particles& particles, Index first, Inde
     for (const WallCorrection& c : m_wallCorrections)
       if (c.active)
         for (std::size_t k = 0; k < 3; ++k)
-          if (w[c.vertices[k]] > Real(0)) p[c.vertices[k]] += c.delta[k];
+          if (yieldingInverseMass(w, c.vertices[k]) > Real(0)) p[c.vertices[k]] += c.delta[k];
   return moved;
 }
 

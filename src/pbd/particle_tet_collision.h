@@ -43,6 +43,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "pbd/particles.h"
@@ -119,7 +120,18 @@ class ParticleTetCollider {
   // one step) then leaves only through wetted faces: never out of the far side of a wall.
   void setWettedVertices(const std::vector<std::uint8_t>& wetted);
 
+  // Two-way coupling: yielding[v] marks the solid's vertices that take a share of the push-out
+  // (vertex ids as for setWettedVertices); the others act as pinned, however light they are.
+  // Unset: every vertex with mass yields.
+  void setYieldingVertices(std::vector<std::uint8_t> yielding) { m_yielding = std::move(yielding); }
+
  private:
+  // The inverse mass particle `particle` (a solid vertex) has in the two-way split.
+  [[nodiscard]] Real yieldingInverseMass(const std::vector<Real>& inverseMass, Index particle) const {
+    const std::size_t v = std::size_t(particle - m_firstVertex);
+    return m_yielding.empty() || (v < m_yielding.size() && m_yielding[v]) ? inverseMass[particle] : Real(0);
+  }
+
   // The wall point a particle was last pushed away from: weights (sum 1) over three vertices.
   struct WallContact {
     Triangle vertices{};
@@ -153,6 +165,7 @@ class ParticleTetCollider {
   std::vector<std::uint8_t> m_exitFaces;
   std::vector<Triangle> m_boundary;  // boundary faces a particle may be put beyond, outward (particle ids)
   std::vector<std::array<Vec3, 2>> m_boundaryBoxes;  // their boxes (lo, hi) at the last rebuild()
+  std::vector<std::uint8_t> m_yielding;  // per solid vertex; empty: all yield
   Index m_firstVertex = 0;
   std::size_t m_vertexEnd = 0;  // one past the solid's last particle id
   // The solid's vertices and padding of the last grid build (rebuild() skips an identical one).

@@ -414,6 +414,30 @@ TEST(ParticleTetTwoWay, APinnedVertexDoesNotMove) {
   EXPECT_LT((momentum - 0.55 * particle).norm(), 1e-6);
 }
 
+// A vertex left out of the yielding set acts as pinned, whatever its mass: the same bits as
+// pinning it by inverse mass 0 (APinnedVertexDoesNotMove), and with none yielding the one-way
+// result bitwise.
+TEST(ParticleTetTwoWay, AVertexThatDoesNotYieldActsAsPinned) {
+  const Vec3 from(Real(0.2), Real(0.25), Real(-0.5)), to(Real(0.2), Real(0.25), Real(0.1));
+  Particles masked = singleTet(kUnitTet, {1, 1, 1, 1}, from, to, 1);
+  Particles pinned = singleTet(kUnitTet, {0, 1, 1, 1}, from, to, 1);
+  ParticleTetCollider maskedCollider(kOneTet, 0), pinnedCollider(kOneTet, 0);
+  maskedCollider.setYieldingVertices({0, 1, 1, 1});
+  EXPECT_EQ(maskedCollider.resolve(masked, 4, 5, twoWay(Real(0.02))), 1u);
+  EXPECT_EQ(pinnedCollider.resolve(pinned, 4, 5, twoWay(Real(0.02))), 1u);
+  for (std::size_t j = 0; j < 5; ++j) EXPECT_TRUE(sameBits(masked.predicted[j], pinned.predicted[j])) << j;
+
+  Particles none = singleTet(kUnitTet, {1, 1, 1, 1}, from, to, 1), oneWay = none;
+  ParticleTetCollider noneCollider(kOneTet, 0), oneWayCollider(kOneTet, 0);
+  noneCollider.setYieldingVertices({0, 0, 0, 0});
+  noneCollider.resolve(none, 4, 5, twoWay(Real(0.02)));
+  ParticleTetSettings s = twoWay(Real(0.02));
+  s.twoWay = false;
+  oneWayCollider.resolve(oneWay, 4, 5, s);
+  for (std::size_t j = 0; j < 5; ++j) EXPECT_TRUE(sameBits(none.predicted[j], oneWay.predicted[j])) << j;
+  EXPECT_FALSE(sameBits(none.predicted[4], to));  // the particle was pushed out
+}
+
 }  // namespace
 }  // namespace hs::pbd
 
