@@ -213,10 +213,15 @@ void validate(const ParseState& st) {
     fail(st.sphereOrigin + ": cycle.sphere.radius: required when [cycle.sphere] is used, expected " +
          detail::findKey("cycle.sphere.radius")->expect + ", got nothing");
   const auto& b = st.scenario.blood;
-  auto number = [](double v) { return detail::formatNumber(v); };
+  auto number = [](pbd::Real v) { return detail::formatReal(v); };  // as the file gave it
   if (b.supportRadius <= b.spacing)
     fail(st.at("blood.support_radius") + ": blood.support_radius: must be larger than blood.spacing (" +
          number(b.spacing) + " m) so that each particle has neighbours, got " + number(b.supportRadius) + " m");
+  // The walls keep each particle a radius away; a radius beyond the spacing its lattice gives it
+  // overlaps its neighbours and, as it nears the cavity's size, leaves the blood no room.
+  if (b.radius > b.spacing)
+    fail(st.at("blood.radius") + ": blood.radius: must not exceed blood.spacing (" + number(b.spacing) +
+         " m), the room each particle has; got " + number(b.radius) + " m");
   if (b.enabled) validateBloodScale(st);
   for (int a = 0; a < 3; ++a) {
     if (b.blockMax[a] <= b.blockMin[a])

@@ -192,5 +192,12 @@ TEST(CliErrors, TheLumpedKeysAcceptTheirDocumentedLimits) {
   }
 }
 
+// A particle as wide as the cavity (radius 3 cm in a 3.2 cm heart) is refused, naming the limit.
+TEST(CliErrors, ABloodRadiusBeyondItsSpacingIsBadInput) {
+  const auto dir = scratchDir("blood_radius");
+  expectBadInput(runHeartsim("run normal --set blood.radius=0.03", dir),
+                 {"--set blood.radius=0.03", "blood.radius: must not exceed blood.spacing (0.0036 m)", "got 0.03 m"});
+}
+
 }  // namespace
 }  // namespace hs::testing
