@@ -286,7 +286,14 @@ PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardi
       pbd::remeshIsotropic(s.vertices, s.triangles, {settings.resolution.edgeLength, 6});
   Surface surface{remeshed.vertices, remeshed.triangles};
   std::vector<bool> basePlate(surface.vertices.size(), false);
+  const std::size_t inputLoops = loops.size();
   loops = pbd::boundaryLoopVertices(surface.triangles);
+  // The annuli were found on the input's loops: a remesh that changed their number has lost
+  // or made one (a fuzzed surface went from one loop to two and read annuli never found).
+  if (loops.size() != inputLoops)
+    fail(file, "remeshing to " + format(settings.resolution.edgeLength * 1e3) +
+                   " mm changed the boundary loops from " + std::to_string(inputLoops) + " to " +
+                   std::to_string(loops.size()) + "; expected a finer resolution");
   if (loops.size() == 1) {
     detail::OpenedBase opened = detail::openFlatBase(surface, loops[0], settings.resolution.edgeLength, file);
     surface = std::move(opened.surface);
