@@ -32,7 +32,8 @@ pbd::SoftBodySettings softBodySettings(const TissueSettings& tissue) {
 // The most a beating vertex may travel inward in one systole (cycle.contraction, physiological
 // mode), as a share of the cavity's size (the radius of a sphere of the cavity's rest volume):
 // beyond it the one-tet-thick wall folds and its tets invert. Measured on `normal` without the
-// lumped circulation (docs/reliability.md): 0.30 of that radius beats for 10 s, 0.35 inverts.
+// lumped circulation (docs/reliability.md): a third of it (0.0104 m) beats for 3 s, 0.011 m
+// (0.35) inverts a tet at 0.24 s.
 constexpr double kMaxContractionShare = 1.0 / 3.0;
 
 void checkContraction(const CycleSettings& cycle, const LvModel& model) {
