@@ -130,11 +130,36 @@ class LoggedErrors : public Assimp::LogStream {
   std::string m_first;
 };
 
+// A PLY header as far as the checks below need it: the format and each element's properties.
+struct PlyProperty {
+  bool list = false;
+  bool integer = false;  // the (list's item) type is an integer type
+};
+struct PlyElement {
+  std::string name;
+  long long count = 0;
+  std::vector<PlyProperty> properties;
+};
+struct PlyHeader {
+  bool ascii = false;
+  std::vector<PlyElement> elements;
+  std::size_t bodyStart = 0;  // byte offset of the first line after end_header
+  long bodyLine = 0;          // its line number
+};
+
+bool isPlyIntegerType(std::string_view type) {
+  for (std::string_view t : {"char", "uchar", "short", "ushort", "int", "uint", "int8", "uint8", "int16", "uint16",
+                             "int32", "uint32"})
+    if (type == t) return true;
+  return false;
+}
+
 // Assimp's PLY reader loops without end on a header line that is not one of its keywords
 // (fuzz_mesh_surface found "element" with bytes >= 0x80 inside). The header is checked here
 // first: printable ASCII lines, each starting with a keyword of the format, up to end_header,
 // element counts no larger than the file.
-void checkPlyHeader(std::string_view bytes, const std::string& name) {
+PlyHeader checkPlyHeader(std::string_view bytes, const std::string& name) {
+  PlyHeader header;
   std::size_t pos = 0;
   for (long line = 1; pos < bytes.size(); ++line) {
     const std::size_t end = std::min(bytes.find('\n', pos), bytes.size());
@@ -148,19 +173,86 @@ void checkPlyHeader(std::string_view bytes, const std::string& name) {
         fail("expected a PLY header line of printable ASCII, got '" + excerpt(text) + "'");
     const std::string_view keyword = text.substr(0, text.find_first_of(" \t"));
     if (line == 1 && keyword != "ply") fail("expected 'ply', got '" + excerpt(text) + "'");
-    if (keyword == "end_header") return;
-    if (keyword == "element") {  // "element NAME COUNT": no more elements than bytes in the file
-      MeshTokens tokens(text, name, '\0', line);
-      (void)tokens.next("element");
-      (void)tokens.next("an element name");
-      (void)tokens.count("an element count", countLimit(bytes));
+    if (keyword == "end_header") {
+      header.bodyStart = std::min(end + 1, bytes.size());
+      header.bodyLine = line + 1;
+      return header;
     }
-    if (line > 1 && keyword != "format" && keyword != "element" && keyword != "property" && keyword != "comment" &&
-        keyword != "obj_info")
+    if (keyword.empty())
       fail("expected format, element, property, comment, obj_info or end_header, got '" + excerpt(text) + "'");
+    MeshTokens tokens(text, name, '\0', line);
+    (void)tokens.next(keyword);
+    if (keyword == "format") {
+      header.ascii = tokens.next("a format") == "ascii";
+    } else if (keyword == "element") {  // "element NAME COUNT": no more elements than bytes in the file
+      PlyElement element;
+      element.name = tokens.next("an element name");
+      element.count = tokens.count("an element count", countLimit(bytes));
+      header.elements.push_back(std::move(element));
+    } else if (keyword == "property") {  // "property TYPE NAME" or "property list COUNT_TYPE TYPE NAME"
+      if (header.elements.empty()) fail("expected an element line before 'property'");
+      PlyProperty property;
+      std::string_view type = tokens.next("a property type");
+      if (type == "list") {
+        property.list = true;
+        (void)tokens.next("a list's count type");
+        type = tokens.next("a list's item type");
+      }
+      property.integer = isPlyIntegerType(type);
+      header.elements.back().properties.push_back(property);
+    } else if (line > 1 && keyword != "comment" && keyword != "obj_info") {
+      fail("expected format, element, property, comment, obj_info or end_header, got '" + excerpt(text) + "'");
+    }
     pos = end + 1;
   }
   throw std::invalid_argument(name + ": the PLY header has no end_header (truncated?)");
+}
+
+// Assimp's ASCII PLY body reader took more than 2 GB on a valid header over a body of garbage
+// (fuzz_mesh_surface, tests/data/meshes/fuzz_findings/open_ply_body_oom.ply). The body is
+// checked here first: each element on a line of its own, with exactly its properties' values
+// (a list: its length, then that many items), every value a finite number, integers where the
+// header says so.
+void checkPlyAsciiBody(std::string_view bytes, const PlyHeader& header, const std::string& name) {
+  std::size_t pos = header.bodyStart;
+  long line = header.bodyLine;
+  for (const PlyElement& element : header.elements) {
+    for (long long item = 0; item < element.count; ++item) {
+      std::string_view text;
+      while (text.find_first_not_of(" \t\r") == std::string_view::npos) {  // blank lines are skipped
+        if (pos >= bytes.size())
+          throw std::invalid_argument(name + ":" + std::to_string(line) + ": expected " +
+                                      std::to_string(element.count) + " " + excerpt(element.name) +
+                                      " lines, got the end of the file after " + std::to_string(item) +
+                                      " (truncated?)");
+        const std::size_t end = std::min(bytes.find('\n', pos), bytes.size());
+        text = bytes.substr(pos, end - pos);
+        pos = end + 1;
+        ++line;
+      }
+      MeshTokens tokens(text, name, '\0', line - 1);
+      const auto value = [&](bool integer, const std::string& what) {
+        if (tokens.atEnd()) tokens.fail("expected " + what + ", got the end of its line");
+        if (integer) (void)tokens.integer(what);
+        else (void)tokens.real(what);
+      };
+      const std::string what = "a value of " + excerpt(element.name) + " " + std::to_string(item);
+      for (const PlyProperty& property : element.properties) {
+        if (!property.list) {
+          value(property.integer, what);
+          continue;
+        }
+        const std::string listLength = "a list length of " + excerpt(element.name) + " " + std::to_string(item);
+        if (tokens.atEnd()) tokens.fail("expected " + listLength + ", got the end of its line");
+        const long long length = tokens.count(listLength, countLimit(bytes));
+        for (long long k = 0; k < length; ++k) value(property.integer, what);
+      }
+      if (!tokens.atEnd())
+        tokens.fail("expected " + std::to_string(element.properties.size()) + " properties of " +
+                    excerpt(element.name) + " " + std::to_string(item) + " on its line, got more: '" +
+                    excerpt(tokens.peek()) + "'");
+    }
+  }
 }
 
 // Assimp's OFF reader allocates what the header's counts say before reading (a forged count of
@@ -177,7 +269,10 @@ void checkOffCounts(std::string_view bytes, const std::string& name) {
 
 ImportedMesh parseSurface(std::string_view bytes, const std::string& extension, const std::string& name) {
   if (bytes.empty()) throw std::invalid_argument(name + ": empty file; expected a ." + extension + " surface mesh");
-  if (extension == "ply") checkPlyHeader(bytes, name);
+  if (extension == "ply") {
+    const PlyHeader header = checkPlyHeader(bytes, name);
+    if (header.ascii) checkPlyAsciiBody(bytes, header, name);
+  }
   if (extension == "off") checkOffCounts(bytes, name);
   Assimp::Importer importer;
   LoggedErrors errors;

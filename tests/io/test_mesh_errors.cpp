@@ -163,10 +163,11 @@ TEST(MeshErrors, UnsupportedVariantsSaySo) {
 // Files fuzz_mesh_surface found: Assimp's triangulation aborted the process on the first PLY
 // (polygons are now cut into fans by heartsim), its header parser looped without end on the
 // second (the header is now checked first), its OFF reader ran out of memory on a count of
-// 1.2e12 faces (counts are now checked against the file's size). Each reads or gives one line.
+// 1.2e12 faces (counts are now checked against the file's size), its ASCII PLY body reader took
+// more than 2 GB on a body of garbage (the body is now checked first). Each reads or gives one line.
 TEST(MeshErrors, FuzzFindingsOfTheSurfaceReaderGiveOneLineOrAMesh) {
   const std::string dir = std::string(HS_TEST_DATA_DIR) + "/meshes/fuzz_findings/";
-  for (const char* file : {"triangulate_abort.ply", "header_hang.ply", "huge_count.off"}) {
+  for (const char* file : {"triangulate_abort.ply", "header_hang.ply", "huge_count.off", "open_ply_body_oom.ply"}) {
     SCOPED_TRACE(file);
     try {
       const io::ImportedMesh mesh = io::readMesh(dir + file);
@@ -178,6 +179,30 @@ TEST(MeshErrors, FuzzFindingsOfTheSurfaceReaderGiveOneLineOrAMesh) {
   }
   expectError(dir + "header_hang.ply", {"header_hang.ply:3:", "printable ASCII"});
   expectError(dir + "huge_count.off", {"huge_count.off:2:", "the number of faces in [0, "});
+  // Line 10 is the first vertex: more values (and a '#') than the x, y, z declared.
+  expectError(dir + "open_ply_body_oom.ply", {"open_ply_body_oom.ply:10:", "vertex 0"});
+}
+
+// The ASCII PLY body is checked before Assimp reads it: a line per element, its declared values.
+TEST(MeshErrors, AnAsciiPlyBodyMustHoldWhatItsHeaderDeclares) {
+  const fs::path dir = scratch("ply_body");
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  spit(dir / "good.ply", header + "0 0 0\n1 0 0\n\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(io::readMesh((dir / "good.ply").string()).triangles.size(), 1u);
+  spit(dir / "extra.ply", header + "0 0 0 7\n1 0 0\n0 1 0\n3 0 1 2\n");
+  expectError(dir / "extra.ply", {"extra.ply:10:", "3 properties of vertex 0", "got more: '7'"});
+  spit(dir / "word.ply", header + "0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n");
+  expectError(dir / "word.ply", {"word.ply:11:", "vertex 1 (a number)", "'zero'"});
+  spit(dir / "short.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1\n");
+  expectError(dir / "short.ply", {"short.ply:13:", "face 0", "the end of its line"});
+  spit(dir / "real_index.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1.5 2\n");
+  expectError(dir / "real_index.ply", {"real_index.ply:13:", "face 0", "'1.5'"});
+  spit(dir / "few.ply", header + "0 0 0\n1 0 0\n");
+  expectError(dir / "few.ply", {"few.ply:", "expected 3 vertex lines", "after 2"});
+  spit(dir / "huge_list.ply", header + "0 0 0\n1 0 0\n0 1 0\n99999999 0 1 2\n");
+  expectError(dir / "huge_list.ply", {"huge_list.ply:13:", "a list length of face 0"});
 }
 
 }  // namespace
