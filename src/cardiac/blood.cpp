@@ -202,13 +202,16 @@ std::vector<Vec3> bloodStartPositions(const Scenario& scenario, const LvModel* m
   std::vector<Vec3> x = b.start == BloodSettings::Start::Chamber ? chamberLattice(scenario)
                                                                  : pbd::fluidBlock(b.blockMin, b.blockMax, b.spacing);
   if (b.particles > 0) {
-    if (x.size() < std::size_t(b.particles))
+    // With a heart and the closed loop, blood the chamber cannot hold waits in the body and
+    // enters through the inflow vessel, as for "vessel" and "heart" (HeartSimulation).
+    const bool restWaits = b.start == BloodSettings::Start::Chamber && model && scenario.circulation.loop;
+    if (x.empty() || (x.size() < std::size_t(b.particles) && !restWaits))
       throw std::invalid_argument("blood.particles: the chamber holds " + str(double(x.size())) +
                                   " particles at spacing " + str(b.spacing) + " m, expected at least " +
                                   str(double(b.particles)) + "; lower blood.particles or blood.spacing");
     // Lowest layers first, so a partial fill is a pool at the bottom of the block.
     std::stable_sort(x.begin(), x.end(), [](const Vec3& p, const Vec3& q) { return p.y() < q.y(); });
-    x.resize(std::size_t(b.particles));
+    x.resize(std::min(x.size(), std::size_t(b.particles)));
   }
   return x;
 }

@@ -113,6 +113,11 @@ void HeartSimulation::buildLumpedCirculation() {
     throw std::invalid_argument(std::string("circulation.valves: with circulation.lumped = true the valves open and "
                                             "close on the lumped circulation's pressures; expected \"pressure\", got \"") +
                                 (c.valveMode == ValveMode::Timing ? "timing" : "open") + "\"");
+  // The vessels' ends pass the lumped flows in and out of the model: blood leaving through the
+  // aorta must come back through the inflow vessel (open, `normal` lost blood at 0.16 s).
+  if (m_scenario.blood.enabled && !c.loop)
+    throw std::invalid_argument("circulation.loop: with circulation.lumped = true the vessels' ends pass the lumped "
+                                "flows in and out of the model, which needs the closed loop; expected true");
   m_drivenWall.emplace(model, selectBeatingVertices(cycle, model), m_firstWallParticle, c.wallMotion);
   // The driven wall is kinematic: its motion is the contraction's, not its constraints'.
   for (Index v : m_drivenWall->drivenVertices()) m_particles.inverseMass[m_firstWallParticle + v] = 0;

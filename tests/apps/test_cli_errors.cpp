@@ -139,6 +139,9 @@ TEST(CliErrors, SwitchesTheLumpedCirculationCannotHonourAreBadInput) {
   expectBadInput(runHeartsim("run irregular --set circulation.valves=open", dir), {"circulation.valves", "got \"open\""});
   expectBadInput(runHeartsim("run normal --set circulation.two_way=true", dir),
                  {"normal", "circulation.two_way", "drives every vertex", "circulation.lumped = false"});
+  // The vessels' ends pass the lumped flows: blood leaving the aorta must come back.
+  expectBadInput(runHeartsim("run normal --set circulation.loop=false", dir),
+                 {"normal", "circulation.loop", "needs the closed loop", "expected true"});
 }
 
 // Without the lumped circulation the wall travels cycle.contraction per systole: the default

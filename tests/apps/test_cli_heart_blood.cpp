@@ -171,6 +171,25 @@ TEST(CliHeartBlood, NormalGivesTheSameStateForOneAndTwoThreads) {
   EXPECT_EQ(hashes[0], hashes[1]);
 }
 
+// A real-size heart started from its chamber: the chamber holds fewer than the scenario's 4,200
+// particles, the rest wait in the body and enter through the inflow vessel (the closed loop).
+TEST(CliHeartBlood, AChamberStartKeepsEveryParticleTheChamberCannotHold) {
+  const auto dir = scratchDir("chamber_start");
+  const CliResult r = runHeartsim("run normal --set blood.start=chamber --duration 0.02 --threads 1 --json", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json blood = nlohmann::json::parse(r.out).at("blood");
+  EXPECT_EQ(blood.at("particles").get<int>(), 4200);
+  EXPECT_EQ(blood.at("lost").get<int>(), 0);
+  EXPECT_EQ(blood.at("inside_wall").get<int>(), 0);
+  // Without the closed loop nothing can wait: a chamber too small is refused, naming its size.
+  const CliResult open = runHeartsim(
+      "run normal --set circulation.lumped=false --set cycle.contraction=0.0095 --set circulation.loop=false "
+      "--set blood.start=chamber",
+      dir);
+  EXPECT_EQ(open.exitCode, 2) << open.err;
+  EXPECT_NE(open.err.find("the chamber holds"), std::string::npos) << open.err;
+}
+
 TEST(CliHeartBlood, VesselStartWithoutAHeartIsAOneLineError) {
   const auto dir = scratchDir("vessel_no_heart");
   const CliResult r =
