@@ -123,9 +123,7 @@ void HeartSimulation::buildLumpedCirculation() {
   for (Index v : m_drivenWall->drivenVertices()) m_particles.inverseMass[m_firstWallParticle + v] = 0;
   // Two-way coupling moves only vertices with mass: where the lumped circulation drives all of
   // them, the switch would change nothing, so it is refused rather than ignored.
-  const auto firstWall = m_particles.inverseMass.begin() + m_firstWallParticle;
-  if (c.twoWay && std::none_of(firstWall, firstWall + std::ptrdiff_t(model.mesh.vertices.size()),
-                               [](Real w) { return w > 0; }))
+  if (c.twoWay && !wallCanYield())
     throw std::invalid_argument(
         "circulation.two_way: the lumped circulation drives every vertex of this wall (its volume sets the "
         "wall's shape), so the blood cannot push it back; two-way coupling needs circulation.lumped = false or "
@@ -394,6 +392,12 @@ void HeartSimulation::endStep(const pbd::StepContext&) {
   const BloodLoop::Turnover turnover =
       c.settings.loop ? c.loop.circulate(m_particles, m_firstBloodParticle) : BloodLoop::Turnover{};
   c.meter.recordLoop(turnover.returned, turnover.reentered, c.loop.waiting());
+}
+
+bool HeartSimulation::wallCanYield() const {
+  if (!m_model) return false;
+  const auto firstWall = m_particles.inverseMass.begin() + m_firstWallParticle;
+  return std::any_of(firstWall, firstWall + std::ptrdiff_t(m_model->mesh.vertices.size()), [](Real w) { return w > 0; });
 }
 
 double HeartSimulation::vesselFill() const {

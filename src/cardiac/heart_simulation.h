@@ -73,6 +73,8 @@ class HeartSimulation {
   // otherwise.
   [[nodiscard]] const LumpedCirculation* lumped() const { return m_lumped ? &*m_lumped : nullptr; }
   [[nodiscard]] const VolumeDrivenWall* drivenWall() const { return m_drivenWall ? &*m_drivenWall : nullptr; }
+  // Some wall vertex has mass (is neither pinned nor driven): two-way coupling can move it.
+  [[nodiscard]] bool wallCanYield() const;
   // Heart and blood: the smaller share of the two vessels' lumens holding blood after the last
   // step: of each vessel's rest-density sites between the ends' buffers, the share whose blood
   // colour is at least half of its value with the heart full (vesselFillShare, heart_sites.h).

@@ -100,8 +100,9 @@ void resolutionCombo(BloodControls& c, const ResolutionStatus& running, double s
       "picks the finest level that holds real time on this computer. Restarts from t = 0.");
 }
 
-void drawBloodSection(BloodControls& c, const ResolutionStatus& resolution, bool hasHeart, bool wallDriven) {
-  if (wallDriven) {
+void drawBloodSection(BloodControls& c, const ResolutionStatus& resolution, bool hasHeart, bool lumped,
+                      bool wallYields) {
+  if (lumped) {
     ImGui::TextDisabled("cannot change EF or the pressures (?)");
     tooltip(
         "Here the circulation model moves the wall and computes the pressures; the wall does not feel "
@@ -131,20 +132,29 @@ void drawBloodSection(BloodControls& c, const ResolutionStatus& resolution, bool
       "Where the blood is at t = 0: in the inflow vessel (it fills the ventricle through the mitral "
       "valve), already in the chamber, or filling the heart and both vessels (what the lumped "
       "circulation needs: it moves the wall from the first step). Restarts from t = 0.");
-  if (wallDriven) {
-    // The lumped circulation drives the wall and opens the valves on its own pressures: the
-    // coupling and valve switches would change nothing here (the simulation refuses them).
-    ImGui::TextDisabled("coupling and valves: the circulation model's (?)");
+  if (wallYields) {
+    if (ImGui::Checkbox("two-way coupling", &c.twoWay)) c.changed = true;
     tooltip(
-        "The circulation model moves the whole wall and opens each valve when the pressure before it is "
-        "higher than after it, so two-way coupling and the valve modes do not apply to this heart. A "
-        "scenario without the circulation model (e.g. heart-only) offers them.");
+        "On: the blood pushes the heart wall back (the wall feels the blood's pressure).\nOff: the wall "
+        "moves the blood but does not feel it, as in the thesis. Restarts from t = 0.");
+  } else {
+    // The lumped circulation drives every wall vertex: the switch would move nothing (the
+    // simulation refuses it).
+    ImGui::TextDisabled("two-way coupling: nothing to push (?)");
+    tooltip(
+        "The circulation model moves the whole wall, so the blood has nothing it could push back. A heart "
+        "with segments that do not beat (e.g. anterior-infarct) or a scenario without the circulation "
+        "model (e.g. heart-only) offers it.");
+  }
+  if (lumped) {
+    // The lumped circulation opens the valves on its own pressures (another mode is refused).
+    ImGui::TextDisabled("valves: by the circulation model's pressures (?)");
+    tooltip(
+        "The circulation model opens each valve when the pressure before it is higher than after it, as "
+        "real valves do, so the valve modes do not apply to this heart. A scenario without the "
+        "circulation model (e.g. heart-only) offers them.");
     return;
   }
-  if (ImGui::Checkbox("two-way coupling", &c.twoWay)) c.changed = true;
-  tooltip(
-      "On: the blood pushes the heart wall back (the wall feels the blood's pressure).\nOff: the wall "
-      "moves the blood but does not feel it, as in the thesis. Restarts from t = 0.");
   const std::span<const Choice<ValveMode>> modes(kValveModes);
   choiceCombo("valves", modes, modes, c.valveMode, c.changed);
   tooltip(

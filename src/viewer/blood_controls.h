@@ -28,9 +28,11 @@ BloodControls bloodControlsFrom(const cardiac::Scenario& scenario, int particleC
 void applyBloodControls(const BloodControls& controls, cardiac::Scenario& scenario);
 
 // resolution: the run's level and count, for the resolution list's counts.
-// hasHeart: the start, coupling and valve controls need the heart; wallDriven: the lumped
-// circulation moves the wall, so the blood's settings cannot change EF or the pressures (the
-// section says so).
-void drawBloodSection(BloodControls& controls, const ResolutionStatus& resolution, bool hasHeart, bool wallDriven);
+// hasHeart: the start, coupling and valve controls need the heart; lumped: the lumped
+// circulation moves the wall and opens the valves, so the blood's settings cannot change EF or
+// the pressures (the section says so) and the valve mode is its; wallYields: some wall vertex is
+// free for the blood to push (two-way coupling is offered).
+void drawBloodSection(BloodControls& controls, const ResolutionStatus& resolution, bool hasHeart, bool lumped,
+                      bool wallYields);
 
 }  // namespace hs::viewer

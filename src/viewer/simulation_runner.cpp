@@ -78,6 +78,7 @@ void readStatus(const SimulationState& state, ViewerStatus& status) {
   status.dt = double(scenario.simulation.dt);
   status.hasHeart = sim.hasHeart();
   status.hasBlood = sim.hasBlood();
+  status.wallYields = sim.wallCanYield();
   status.physiological = scenario.cycle.mode == cardiac::TimingMode::Physiological;
   status.heartSize = float(scenario.geometry.endoRadius);
   status.phase = sim.hasHeart() && scenario.cycle.enabled ? cardiac::phaseName(step.phase) : "";

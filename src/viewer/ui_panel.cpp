@@ -242,7 +242,9 @@ void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
   if (controls.circulation.lumped && section("Circulation", PanelSection::Circulation, open))
     drawCirculationSection(controls.circulation, controls.heartRateBpm, controls.cycleChanged,
                            controls.showCirculation);
-  if (status.hasBlood && section("Blood", PanelSection::Blood, open)) drawBloodSection(controls.blood, status.resolution, status.hasHeart, controls.circulation.lumped);
+  if (status.hasBlood && section("Blood", PanelSection::Blood, open))
+    drawBloodSection(controls.blood, status.resolution, status.hasHeart, controls.circulation.lumped,
+                     status.wallYields);
   if (status.hasHeart && section("Beating region", PanelSection::Region, open))
     drawRegionSection(controls.region, status.region);
   if (section("Display", PanelSection::Display, open)) displaySection(controls, status);

@@ -67,6 +67,7 @@ struct ViewerStatus {
   double realTimeFactor = 1;  // simulated / wall seconds achieved, smoothed
   bool behind = false;        // the step budget could not keep up with the requested speed
   bool hasHeart = false, hasBlood = false;
+  bool wallYields = false;          // some wall vertex is free for two-way coupling to move
   bool physiological = false;       // cycle timing mode (heart rate applies)
   float heartSize = 1;              // m, the cavity's radius at the base: scales the beat's sliders
   double speedMax = 1;              // m/s at the top of the blood colour scale
