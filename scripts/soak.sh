@@ -6,7 +6,8 @@
 # volume error and smallest dihedral angle), the number of beats, the ejection fraction of the
 # first and the last minute (or tenth of the run, when shorter) and its drift in points per
 # 10 minutes (least squares over every beat). Results: results/soak/<scenario>/.
-# HEARTSIM=path/to/heartsim runs that executable instead of the release build.
+# HEARTSIM=path/to/heartsim runs that executable instead of the release build; THREADS=N sets
+# each run's threads (default: the number of cores).
 # A long run, not a test: docs/reliability.md has the figures.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -32,7 +33,7 @@ for s in "${scenarios[@]}"; do
   mkdir -p "$out"
   start=$(date +%s)
   code=0
-  "$heartsim" run "$s" --duration "$seconds" --threads "$(nproc)" --out "$out" \
+  "$heartsim" run "$s" --duration "$seconds" --threads "${THREADS:-$(nproc)}" --out "$out" \
     > "$out/stdout.txt" 2> "$out/stderr.txt" || code=$?
   wall=$(( $(date +%s) - start ))
   # The smallest dihedral angle over the run is in the summary (there is none after a crash).

@@ -7,7 +7,8 @@
 # complete beats (n/a when none), the wall's largest departure from its rest shape, wall
 # seconds, and the first line of the error when the run failed. Several runs go at once (JOBS,
 # default: the number of cores). Results: results/switches/<scenario>/<switch>/.
-# HEARTSIM=path/to/heartsim runs that executable instead of the release build.
+# HEARTSIM=path/to/heartsim runs that executable instead of the release build; SWITCHES=a,b
+# runs only the switches of those names.
 # A long run, not a test: docs/reliability.md has the figures.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -44,6 +45,14 @@ if [ -z "$heartsim" ]; then
   heartsim=build/release/apps/heartsim
 fi
 jobs=${JOBS:-$(nproc)}
+if [ -n "${SWITCHES:-}" ]; then
+  chosen=()
+  for sw in "${switches[@]}"; do
+    [[ ",$SWITCHES," == *",${sw%%|*},"* ]] && chosen+=("$sw")
+  done
+  [ ${#chosen[@]} -gt 0 ] || { echo "scripts/switches.sh: SWITCHES=$SWITCHES names no switch" >&2; exit 2; }
+  switches=("${chosen[@]}")
+fi
 
 one_run() {  # scenario, switch name, set argument
   local s=$1 name=$2 set=$3 out=results/switches/$1/$2 code=0 start
