@@ -110,11 +110,20 @@ int simulate(cardiac::HeartSimulation& sim, cardiac::RunMonitor& monitor, std::i
   return kExitOk;
 }
 
+// The heart's sizes at rest, measured on its model (none without a heart).
+std::optional<cardiac::AnatomyFigures> anatomyOf(const cardiac::HeartSimulation& sim) {
+  if (!sim.hasHeart()) return std::nullopt;
+  return cardiac::measureAnatomy(sim.model());
+}
+
 // A run that became invalid still leaves its summary.json, with what failed, where and when
 // under "failure"; stdout stays empty and the exit code says it failed.
 void writeFailureSummary(const cardiac::Scenario& scenario, const io::RunTiming& timing,
-                         const cardiac::RunMonitor& monitor, const fs::path& outDir) {
-  nlohmann::ordered_json report = io::runReport(scenario, timing, monitor.summary(), outDir.string());
+                         const cardiac::RunMonitor& monitor, const cardiac::HeartSimulation& sim,
+                         const fs::path& outDir) {
+  const std::optional<cardiac::AnatomyFigures> anatomy = anatomyOf(sim);
+  nlohmann::ordered_json report =
+      io::runReport(scenario, timing, monitor.summary(), outDir.string(), anatomy ? &*anatomy : nullptr);
   const cardiac::Verdict& verdict = monitor.verdict();
   report["failure"] = {{"message", verdict.message()}, {"step", verdict.step}, {"time_s", verdict.time}};
   std::ofstream summary(outDir / "summary.json");
@@ -145,9 +154,11 @@ bool writeCirculationPlots(const cardiac::Scenario& scenario, const cardiac::Hea
 
 // summary.json, then the same report on stdout (--json) or one line on stderr.
 int report(const cardiac::Scenario& scenario, const io::RunTiming& timing, const cardiac::RunMonitor& monitor,
-           const fs::path& outDir, bool json) {
+           const cardiac::HeartSimulation& sim, const fs::path& outDir, bool json) {
   const cardiac::RunSummary run = monitor.summary();
-  const nlohmann::ordered_json report = io::runReport(scenario, timing, run, outDir.string());
+  const std::optional<cardiac::AnatomyFigures> anatomy = anatomyOf(sim);
+  const nlohmann::ordered_json report =
+      io::runReport(scenario, timing, run, outDir.string(), anatomy ? &*anatomy : nullptr);
   std::ofstream summary(outDir / "summary.json");
   summary << report.dump(2) << '\n';
   if (!summary) {
@@ -208,10 +219,10 @@ int runCommand(const RunOptions& options) {
   const CheckpointPlan checkpoints{outDir, *checkpointEvery};
   const int simulated = simulate(*sim, monitor, *steps - sim->stepCount(), *csv, vtk ? &*vtk : nullptr,
                                  scenario->output.vtkEvery, checkpoints, timing.wallSeconds);
-  if (simulated == kExitInvalidSimulation) writeFailureSummary(*scenario, timing, monitor, outDir);
+  if (simulated == kExitInvalidSimulation) writeFailureSummary(*scenario, timing, monitor, *sim, outDir);
   if (simulated != kExitOk) return simulated;
   if (!writeCirculationPlots(*scenario, *sim, monitor, outDir)) return kExitFailure;
-  return report(*scenario, timing, monitor, outDir, options.json);
+  return report(*scenario, timing, monitor, *sim, outDir, options.json);
 }
 
 }  // namespace hs::app

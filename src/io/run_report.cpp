@@ -126,8 +126,17 @@ nlohmann::ordered_json heartPumpReport(const cardiac::BeatTracker& beats) {
           {"aortic_net_forward_ml", figure(m.aorticNet * kClinical.volume)}};
 }
 
+nlohmann::ordered_json anatomyReport(const cardiac::AnatomyFigures& anatomy) {
+  const auto& root = anatomy.aorticRootDiameter;
+  return {{"mitral_area_cm2", anatomy.mitralArea * 1e4},
+          {"aortic_area_cm2", anatomy.aorticArea * 1e4},
+          {"aortic_root_diameter_mm", root ? nlohmann::ordered_json(*root * 1e3) : nlohmann::ordered_json()},
+          {"long_axis_mm", anatomy.longAxis * 1e3}};
+}
+
 nlohmann::ordered_json runReport(const cardiac::Scenario& scenario, const RunTiming& timing,
-                                 const cardiac::RunSummary& run, const std::string& outputDir) {
+                                 const cardiac::RunSummary& run, const std::string& outputDir,
+                                 const cardiac::AnatomyFigures* anatomy) {
   nlohmann::ordered_json report;
   report["scenario"] = scenario.name;
   report["steps"] = run.steps;
@@ -139,6 +148,7 @@ nlohmann::ordered_json runReport(const cardiac::Scenario& scenario, const RunTim
   report["threads"] = timing.threads;
   report["iterations"] = scenario.simulation.iterations;
   report["state_hash"] = hex(run.stateHash);
+  if (anatomy) report["model"] = anatomyReport(*anatomy);
   if (run.heart) addHeartReport(report, run);
   if (run.blood) report["blood"] = bloodReport(run, scenario.blood.iterations);
   report["output_dir"] = outputDir;

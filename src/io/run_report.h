@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "cardiac/lv_anatomy.h"
 #include "cardiac/run_monitor.h"
 #include "cardiac/scenario.h"
 
@@ -21,8 +22,14 @@ struct RunTiming {
   }
 };
 
+// `anatomy`: the heart's sizes (cardiac/lv_anatomy.h) as "model", before the wall's figures.
 nlohmann::ordered_json runReport(const cardiac::Scenario& scenario, const RunTiming& timing,
-                                 const cardiac::RunSummary& run, const std::string& outputDir);
+                                 const cardiac::RunSummary& run, const std::string& outputDir,
+                                 const cardiac::AnatomyFigures* anatomy = nullptr);
+
+// "model": the annuli's areas in cm^2, the aortic root's diameter and the long axis in mm (the
+// root null on a heart without an outflow vessel).
+nlohmann::ordered_json anatomyReport(const cardiac::AnatomyFigures& anatomy);
 
 // "heart": beats and the means over complete beats after the first, in mL, L/min.
 nlohmann::ordered_json heartPumpReport(const cardiac::BeatTracker& beats);

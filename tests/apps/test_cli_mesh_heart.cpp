@@ -36,6 +36,10 @@ TEST(CliMeshHeart, IdealizedLvRunsFromAnyDirectory) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["tissue"]["inverted_tets"], 0);
   EXPECT_NEAR(j["cavity"]["volume_rest_m3"].get<double>() * 1e6, 167.5, 1.675);
+  // A patient's wall has annuli but no vessels: no root to measure, and it says so.
+  EXPECT_GT(j["model"]["mitral_area_cm2"].get<double>(), 1);
+  EXPECT_GT(j["model"]["long_axis_mm"].get<double>(), 50);
+  EXPECT_TRUE(j["model"]["aortic_root_diameter_mm"].is_null());
 }
 
 }  // namespace

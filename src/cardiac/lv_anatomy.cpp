@@ -1,0 +1,56 @@
+#include "cardiac/lv_anatomy.h"
+
+#include <algorithm>
+
+namespace hs::cardiac {
+namespace {
+
+using Vec3d = Eigen::Vector3d;
+
+// A closed ring's centroid and area vector 1/2 sum (p_k - c) x (p_k+1 - c): its norm is the
+// area of the fan that closes the ring, its direction the fan's normal.
+struct RingShape {
+  Vec3d centroid = Vec3d::Zero();
+  Vec3d area = Vec3d::Zero();
+};
+
+RingShape ringShape(const LvModel& model, const std::vector<Index>& ring) {
+  RingShape s;
+  if (ring.empty()) return s;
+  for (Index v : ring) s.centroid += model.mesh.vertices[v].cast<double>();
+  s.centroid /= double(ring.size());
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const Vec3d a = model.mesh.vertices[ring[k]].cast<double>() - s.centroid;
+    const Vec3d b = model.mesh.vertices[ring[(k + 1) % ring.size()]].cast<double>() - s.centroid;
+    s.area += 0.5 * a.cross(b);
+  }
+  return s;
+}
+
+}  // namespace
+
+AnatomyFigures measureAnatomy(const LvModel& model) {
+  AnatomyFigures f;
+  const RingShape mitral = ringShape(model, model.mitralRing);
+  const RingShape aortic = ringShape(model, model.aorticRing);
+  f.mitralArea = mitral.area.norm();
+  f.aorticArea = aortic.area.norm();
+
+  // The root: the outflow vessel's lumen side (even ids, lv_model.h) about the aortic ring's axis.
+  const Vec3d axis = aortic.area.norm() > 0 ? Vec3d(aortic.area.normalized()) : Vec3d::UnitY();
+  double rootRadius = -1;
+  for (std::size_t v = 0; v < model.mesh.vertices.size(); v += 2) {
+    if (model.region[v] != Region::OutflowVessel) continue;
+    const Vec3d d = model.mesh.vertices[v].cast<double>() - aortic.centroid;
+    rootRadius = std::max(rootRadius, (d - axis.dot(d) * axis).norm());
+  }
+  if (rootRadius >= 0) f.aorticRootDiameter = 2 * rootRadius;
+
+  // The long axis: the cavity's extent below the mitral annulus's plane.
+  const Vec3d down = mitral.area.norm() > 0 ? Vec3d(-mitral.area.normalized()) : -Vec3d::UnitY();
+  for (const pbd::Triangle& t : model.cavitySurface)
+    for (Index v : t) f.longAxis = std::max(f.longAxis, down.dot(model.mesh.vertices[v].cast<double>() - mitral.centroid));
+  return f;
+}
+
+}  // namespace hs::cardiac
