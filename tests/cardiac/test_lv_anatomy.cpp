@@ -4,23 +4,12 @@
 #include <numbers>
 
 #include "cardiac/lv_anatomy.h"
+#include "normal_geometry.h"
 
 namespace hs::cardiac {
 namespace {
 
-// The real-size hearts' [model] sizes (scenarios/normal.toml).
-LvGeometryParams normalSizes() {
-  LvGeometryParams g;
-  g.endoRadius = Real(0.032);
-  g.endoLongAxis = Real(0.06);
-  g.wallThickness = Real(0.01);
-  g.baseThickness = Real(0.004);
-  g.mitralRadius = Real(0.0125);
-  g.aorticRadius = Real(0.010);
-  g.vesselWallThickness = Real(0.002);
-  g.inflowVesselLength = g.outflowVesselLength = Real(0.03);
-  return g;
-}
+using testing::normalGeometry;
 
 // A ring of N vertices on its lumen's circle encloses the regular N-gon's area,
 // N/2 r^2 sin(2 pi / N): a little below the disc's (4.72 cm^2 for normal's 4.91 cm^2 mitral).
@@ -29,7 +18,7 @@ double inscribedArea(std::size_t n, Real radius) {
 }
 
 TEST(LvAnatomy, MeasuresTheProceduralHeartsSizesOnItsMesh) {
-  const LvGeometryParams g = normalSizes();
+  const LvGeometryParams g = normalGeometry();
   const LvModel model = buildLvModel(g);
   const AnatomyFigures f = measureAnatomy(model);
   EXPECT_NEAR(f.mitralArea, inscribedArea(model.mitralRing.size(), g.mitralRadius), 1e-3 * f.mitralArea);
@@ -40,7 +29,7 @@ TEST(LvAnatomy, MeasuresTheProceduralHeartsSizesOnItsMesh) {
 }
 
 TEST(LvAnatomy, FollowsTheMeshNotItsParameters) {
-  const LvGeometryParams g = normalSizes();
+  const LvGeometryParams g = normalGeometry();
   LvModel model = buildLvModel(g);
   const AnatomyFigures before = measureAnatomy(model);
   for (Vec3& x : model.mesh.vertices) x *= Real(2);
@@ -63,7 +52,7 @@ TEST(LvAnatomy, FollowsTheMeshNotItsParameters) {
 }
 
 TEST(LvAnatomy, NoRootWithoutAnOutflowVessel) {
-  LvModel model = buildLvModel(normalSizes());
+  LvModel model = buildLvModel(normalGeometry());
   for (Region& r : model.region)
     if (r == Region::OutflowVessel) r = Region::BasePlate;
   EXPECT_FALSE(measureAnatomy(model).aorticRootDiameter.has_value());

@@ -15,6 +15,7 @@
 #include "pbd/particle_tet_collision.h"
 #include "pbd/swept_contact.h"
 #include "pbd/tet_mesh.h"
+#include "normal_geometry.h"
 
 namespace hs::cardiac {
 namespace {
@@ -23,19 +24,7 @@ using pbd::Real;
 
 constexpr Real kRadius = Real(0.0018);  // normal's blood.radius
 
-LvGeometryParams normalGeometry() {
-  LvGeometryParams g;
-  g.endoRadius = Real(0.032);
-  g.endoLongAxis = Real(0.06);
-  g.wallThickness = Real(0.01);
-  g.baseThickness = Real(0.004);
-  g.mitralRadius = Real(0.0125);
-  g.aorticRadius = Real(0.010);
-  g.vesselWallThickness = Real(0.002);
-  g.inflowVesselLength = Real(0.03);
-  g.outflowVesselLength = Real(0.03);
-  return g;
-}
+using testing::normalGeometry;
 
 const LvModel& normalModel() {
   static const LvModel model = buildLvModel(normalGeometry());
