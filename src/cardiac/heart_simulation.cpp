@@ -68,16 +68,21 @@ HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
 
 // The wall: the LV model's vertices as the first particles, its constraints, the cycle.
 void HeartSimulation::buildHeart() {
-  if (m_scenario.patient.kind == ModelKind::Mesh)
-    m_model.emplace(buildPatientLvModel(m_scenario.patient, m_scenario.geometry.wallThickness));
-  else
+  std::optional<PatientWall> patientWall;
+  if (m_scenario.patient.kind == ModelKind::Mesh) {
+    patientWall.emplace(buildPatientShell(m_scenario.patient, m_scenario.geometry.wallThickness));
+    m_model.emplace(lvModelFromPatientWall(*patientWall));
+  } else {
     m_model.emplace(buildLvModel(m_scenario.geometry));
+  }
   const LvModel& model = *m_model;
   m_firstWallParticle = pbd::addSoftBody(m_particles, m_constraints, model.mesh, model.surface,
                                          softBodySettings(m_scenario.tissue));
   for (Index v : model.pinned) m_particles.inverseMass[m_firstWallParticle + v] = 0;
   pbd::finalizeConstraints(m_constraints, m_particles.position);
-  if (m_scenario.circulation.lumped) {
+  if (patientWall && !m_scenario.motion.frameSurfaces.empty()) {
+    buildRecordedBeat(*patientWall);
+  } else if (m_scenario.circulation.lumped) {
     buildLumpedCirculation();
   } else {
     checkContraction(m_scenario.cycle, model);
@@ -142,6 +147,26 @@ void HeartSimulation::buildLumpedCirculation() {
   if (m_scenario.blood.enabled) p.bloodDensity = double(m_scenario.blood.restDensity);
   m_lumped.emplace(p);
   m_lumped->startFrom(double(cardiac::cavityVolume(model, model.mesh.vertices)));
+}
+
+// [motion]: the recorded beat moves the endocardium (kinematic), the cycle's clock only keeps
+// its time: a regular beat of the recording's period whose systole ends at the recording's
+// smallest volume, so that the beats' EDV and ESV are the recording's.
+void HeartSimulation::buildRecordedBeat(const PatientWall& wall) {
+  const MotionSettings& motion = m_scenario.motion;
+  m_recordedBeat.emplace(*m_model, wall, motion.frameSurfaces, double(motion.period), m_firstWallParticle);
+  const double systole = m_recordedBeat->systolicFraction();
+  if (!(systole >= 0.05 && systole <= 0.95))
+    throw std::invalid_argument("motion.frames: the smallest recorded volume is at frame " +
+                                std::to_string(int(std::lround(systole * motion.count))) + " of " +
+                                std::to_string(motion.count) +
+                                "; expected frame 0 at end-diastole and end-systole between 5% and 95% of the beat");
+  CycleSettings cycle = m_scenario.cycle;
+  cycle.mode = TimingMode::Physiological;
+  cycle.heartRateBpm = Real(60.0 / double(motion.period));
+  cycle.systolicFraction = Real(systole);
+  m_cycle.emplace(cycle, *m_model, m_firstWallParticle);
+  for (Index v : m_recordedBeat->drivenVertices()) m_particles.inverseMass[m_firstWallParticle + v] = 0;
 }
 
 // Blood beyond this box is lost: the container, or the heart's rest bounding box grown by a
@@ -276,6 +301,7 @@ void HeartSimulation::step() {
   laps.lap(StepStage::End);
   if (m_profile) ++m_profile->steps;
   ++m_steps;
+  if (m_recordedBeat) m_recordedBeat->observe(time(), double(cavityVolume()));
 }
 
 void HeartSimulation::beginStep(const pbd::StepContext& context) {
@@ -318,6 +344,11 @@ void HeartSimulation::applyExternalForces(const pbd::StepContext& context) {
 
 void HeartSimulation::moveWall(const pbd::StepContext& context) {
   if (!m_cycle) return;
+  if (m_recordedBeat) {
+    m_cycle->advanceClocks(context.dt);
+    m_recordedBeat->drive(double(context.stepIndex + 1) * double(context.dt), m_particles.predicted);
+    return;
+  }
   if (!m_drivenWall) {
     m_cycle->apply(m_particles.position, m_particles.predicted, context);
     return;

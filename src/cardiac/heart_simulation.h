@@ -19,6 +19,7 @@
 #include "cardiac/lumped_circulation.h"
 #include "cardiac/volume_driven_wall.h"
 #include "cardiac/lv_model.h"
+#include "cardiac/recorded_beat.h"
 #include "cardiac/scenario.h"
 #include "cardiac/step_profile.h"
 #include "pbd/fluid_solver.h"
@@ -73,6 +74,8 @@ class HeartSimulation {
   // otherwise.
   [[nodiscard]] const LumpedCirculation* lumped() const { return m_lumped ? &*m_lumped : nullptr; }
   [[nodiscard]] const VolumeDrivenWall* drivenWall() const { return m_drivenWall ? &*m_drivenWall : nullptr; }
+  // [motion]: the recorded beat driving the endocardium; null otherwise.
+  [[nodiscard]] const RecordedBeat* recordedBeat() const { return m_recordedBeat ? &*m_recordedBeat : nullptr; }
   // Some wall vertex has mass (is neither pinned nor driven): two-way coupling can move it.
   [[nodiscard]] bool wallCanYield() const;
   // Heart and blood: the smaller share of the two vessels' lumens holding blood after the last
@@ -109,6 +112,7 @@ class HeartSimulation {
   // Construction.
   void buildHeart();
   void buildLumpedCirculation();
+  void buildRecordedBeat(const PatientWall& wall);
   void buildBlood();
   void findDomain();
   void recordBloodOrigins();
@@ -142,6 +146,7 @@ class HeartSimulation {
   std::optional<LumpedCirculation> m_lumped;                // circulation.lumped
   std::optional<VolumeDrivenWall> m_drivenWall;             // circulation.lumped
   std::optional<VesselEnds> m_ends;                         // circulation.lumped
+  std::optional<RecordedBeat> m_recordedBeat;               // [motion]
   std::vector<double> m_regionShares;                       // circulation.lumped: per beating region
   BeatTiming m_beatTiming;                                  // circulation.lumped
   VesselSites m_vesselSites;                                // heart and blood

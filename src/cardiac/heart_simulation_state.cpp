@@ -46,6 +46,8 @@ void HeartSimulation::save(pbd::StateWriter& w) const {
   if (m_drivenWall) m_drivenWall->save(w);
   w.put(m_ends.has_value());
   if (m_ends) m_ends->save(w);
+  w.put(m_recordedBeat.has_value());
+  if (m_recordedBeat) m_recordedBeat->save(w);
   w.put(m_circulation.has_value());
   if (m_circulation) {
     m_circulation->valves.save(w);
@@ -62,6 +64,7 @@ void HeartSimulation::load(pbd::StateReader& r) {
   if (presence(r, m_lumped.has_value(), "the lumped circulation")) m_lumped->load(r);
   if (presence(r, m_drivenWall.has_value(), "the driven wall")) m_drivenWall->load(r);
   if (presence(r, m_ends.has_value(), "the vessel ends")) m_ends->load(r);
+  if (presence(r, m_recordedBeat.has_value(), "the recorded beat")) m_recordedBeat->load(r);
   if (presence(r, m_circulation.has_value(), "the circulation")) {
     m_circulation->valves.load(r);
     m_circulation->meter.load(r);

@@ -124,6 +124,10 @@ const std::string& patientModelFile(const PatientModelSettings& patient) {
 }
 
 LvModel buildPatientLvModel(const PatientModelSettings& patient, Real wallThickness) {
+  return lvModelFromPatientWall(buildPatientShell(patient, wallThickness));
+}
+
+PatientWall buildPatientShell(const PatientModelSettings& patient, Real wallThickness) {
   PatientWallSettings s;
   s.file = patientModelFile(patient);
   s.units = patient.units;
@@ -134,7 +138,7 @@ LvModel buildPatientLvModel(const PatientModelSettings& patient, Real wallThickn
   s.aorticLoop = patient.aorticLoop;
   if (patient.septum != Vec3::Zero()) s.septum = patient.septum.cast<double>();
   const Surface* epicardium = patient.epicardiumSurface ? &*patient.epicardiumSurface : nullptr;
-  return lvModelFromPatientWall(buildPatientWall(patient.endocardiumSurface, epicardium, s));
+  return buildPatientWall(patient.endocardiumSurface, epicardium, s);
 }
 
 }  // namespace hs::cardiac

@@ -25,6 +25,9 @@ LvModel lvModelFromPatientWall(const PatientWall& wall);
 // used where no epicardium gives it. Errors are buildPatientWall's one-line
 // std::invalid_argument, naming `patient`'s file.
 LvModel buildPatientLvModel(const PatientModelSettings& patient, Real wallThickness);
+// The one-layer wall buildPatientLvModel turns into the model (its placement ties a recorded
+// beat to the wall, recorded_beat.h).
+PatientWall buildPatientShell(const PatientModelSettings& patient, Real wallThickness);
 
 // The file that names a patient heart in errors: the endocardium's or the volume mesh's.
 const std::string& patientModelFile(const PatientModelSettings& patient);

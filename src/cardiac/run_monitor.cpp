@@ -198,6 +198,11 @@ RunSummary RunMonitor::summary() const {
     r.restCavity = cavityVolume(model, model.mesh.vertices);
     r.cavityMin = m_observed > 0 ? e.cavityMin : double(m_sim.cavityVolume());
     r.cavityMax = m_observed > 0 ? e.cavityMax : double(m_sim.cavityVolume());
+    if (const RecordedBeat* recorded = m_sim.recordedBeat()) {
+      r.motionFrameVolumes = recorded->frameVolumes();
+      r.motionPeriod = recorded->period();
+      r.motionVolumeErrorMax = recorded->volumeErrorMax();
+    }
   }
   if (r.blood) {
     const BloodStats& b = r.bloodFinal = m_sim.bloodStats();

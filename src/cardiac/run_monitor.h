@@ -114,6 +114,10 @@ struct RunSummary {
   double cavityMin = 0, cavityMax = 0;
   BeatTracker beats{0};
   std::optional<CirculationRecorder> circulation;  // circulation.lumped
+  // [motion]: the recorded beat's frame volumes (m^3; empty without one), its period (s) and the
+  // largest relative difference of the 3D cavity from the recorded volume over the run.
+  std::vector<double> motionFrameVolumes;
+  double motionPeriod = 0, motionVolumeErrorMax = 0;
   // Blood: at the end, and the most over the run (lost, inside the wall, speed) or over its
   // last second (density error).
   BloodStats bloodFinal;

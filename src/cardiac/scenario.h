@@ -174,6 +174,17 @@ struct PatientModelSettings {
   std::optional<Surface> epicardiumSurface;
 };
 
+// A recorded beat ([motion], issue 16 item 5): a sequence of endocardial surfaces over one beat,
+// each with the vertices and triangles of the model's endocardium file (cine MRI, e.g. 25
+// frames), replayed periodically: the wall's inner surface follows them (recorded_beat.h).
+struct MotionSettings {
+  std::string frames;  // path pattern with {frame} or {frame:0Nd}; "" = no recorded beat
+  int count = 0;       // frames in the beat, frame 0 at end-diastole
+  Real period = 0;     // s, the beat's length
+  // Read by the scenario reader, in the file's frame and units, frame 0 first.
+  std::vector<Surface> frameSurfaces;
+};
+
 struct OutputSettings {
   bool vtk = false;
   int vtkEvery = 10;  // steps between VTK frames
@@ -186,6 +197,7 @@ struct Scenario {
   bool heart = true;  // model.enabled: the LV wall exists (false: blood in a container only)
   LvGeometryParams geometry;
   PatientModelSettings patient;
+  MotionSettings motion;
   TissueSettings tissue;
   CycleSettings cycle;
   BloodSettings blood;

@@ -1,5 +1,6 @@
 #include "io/run_report.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -57,6 +58,19 @@ void addCirculationReport(nlohmann::ordered_json& heart, const cardiac::Circulat
 }
 
 // The wall's part: mesh, volume errors, cavity and beats.
+// [motion]: the recorded beat's own volumes beside the 3D heart's (null without a recording).
+nlohmann::ordered_json motionReport(const cardiac::RunSummary& run) {
+  const std::vector<double>& v = run.motionFrameVolumes;
+  if (v.empty()) return nullptr;
+  const auto [smallest, largest] = std::minmax_element(v.begin(), v.end());
+  return {{"frames", v.size()},
+          {"period_s", run.motionPeriod},
+          {"recorded_edv_ml", *largest * kClinical.volume},
+          {"recorded_esv_ml", *smallest * kClinical.volume},
+          {"recorded_ejection_fraction", (*largest - *smallest) / *largest},
+          {"volume_error_max", run.motionVolumeErrorMax}};
+}
+
 void addHeartReport(nlohmann::ordered_json& report, const cardiac::RunSummary& run) {
   report["tissue"] = {
       {"vertices", run.vertices},
@@ -89,6 +103,7 @@ void addHeartReport(nlohmann::ordered_json& report, const cardiac::RunSummary& r
   report["beats"] = run.beats.beats().size();
   report["heart"] = heartPumpReport(run.beats);
   if (run.circulation) addCirculationReport(report["heart"], *run.circulation);
+  report["motion"] = motionReport(run);
 }
 
 nlohmann::ordered_json bloodReport(const cardiac::RunSummary& run, int iterations) {

@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "io/patient_surfaces.h"
+#include "io/recorded_frames.h"
 #include "io/scenario_internal.h"
 
 namespace hs::io {
@@ -236,6 +237,16 @@ void validate(const ParseState& st) {
   }
 }
 
+// A path set by `key`, made absolute from where the key was set: the scenario file's folder,
+// or the working directory for --set.
+std::string pathFromKey(const ParseState& st, const char* key, const std::string& path) {
+  const auto dir = st.keyDir.find(key);
+  const std::filesystem::path base = dir != st.keyDir.end() ? dir->second : std::filesystem::path();
+  std::error_code ec;
+  const std::filesystem::path full = std::filesystem::absolute(base / path, ec);
+  return (ec ? base / path : full).lexically_normal().string();
+}
+
 // [model] kind = "mesh": the paths made absolute from where each was set (the scenario file's
 // folder, or the working directory for --set), the unset wall thickness a real heart's, and
 // the files read, so that a missing or bad mesh stops the run here with its key.
@@ -244,14 +255,8 @@ void resolveMeshModel(ParseState& st) {
   if (p.kind != cardiac::ModelKind::Mesh) return;
   const std::pair<const char*, std::string*> paths[] = {
       {"model.endocardium", &p.endocardium}, {"model.epicardium", &p.epicardium}, {"model.volume_mesh", &p.volumeMesh}};
-  for (const auto& [key, path] : paths) {
-    if (path->empty()) continue;
-    const auto dir = st.keyDir.find(key);
-    const std::filesystem::path base = dir != st.keyDir.end() ? dir->second : std::filesystem::path();
-    std::error_code ec;
-    const std::filesystem::path full = std::filesystem::absolute(base / *path, ec);
-    *path = (ec ? base / *path : full).lexically_normal().string();
-  }
+  for (const auto& [key, path] : paths)
+    if (!path->empty()) *path = pathFromKey(st, key, *path);
   const std::string kindAt = st.at("model.kind") + ": ";
   if (p.endocardium.empty() == p.volumeMesh.empty())
     fail(kindAt + "model.endocardium: expected exactly one of model.endocardium (a surface file) and "
@@ -276,6 +281,41 @@ void resolveMeshModel(ParseState& st) {
     io::readPatientModelFiles(p);
   } catch (const std::invalid_argument& e) {
     fail(st.at(key) + std::string(": ") + key + ": " + e.what());
+  }
+}
+
+// [motion]: a recorded beat drives a patient's heart and sets its timing (the cycle's heart rate,
+// systolic fraction and contraction are not used, docs/scenarios.md); what would contradict it
+// (another pattern, a beat count, parts that beat alone) is refused. The frames are read here,
+// each checked against the endocardium, so that a bad frame stops the run with its key.
+void resolveMotion(ParseState& st) {
+  cardiac::MotionSettings& m = st.scenario.motion;
+  if (m.frames.empty()) return;
+  const std::string at = st.at("motion.frames") + ": motion.frames: ";
+  const cardiac::PatientModelSettings& p = st.scenario.patient;
+  if (p.kind != cardiac::ModelKind::Mesh)
+    fail(at + "a recorded beat drives a patient's heart; expected model.kind = \"mesh\", got \"procedural\"");
+  if (m.count < 2)
+    fail(st.at("motion.count") + ": motion.count: expected at least 2 frames with motion.frames, got " +
+         std::to_string(m.count));
+  if (!(double(m.period) >= 0.24))
+    fail(st.at("motion.period") + ": motion.period: expected at least 0.24 s (250 bpm) with motion.frames, got " +
+         detail::formatNumber(double(m.period)));
+  const cardiac::CycleSettings& c = st.scenario.cycle;
+  if (!c.enabled || c.pattern != cardiac::BeatPattern::Normal || c.beats != 0)
+    fail(st.at(!c.enabled ? "cycle.enabled" : c.pattern != cardiac::BeatPattern::Normal ? "cycle.pattern" : "cycle.beats") +
+         ": cycle: the recorded beat repeats as recorded; expected cycle.enabled = true, pattern = \"normal\" and "
+         "beats = 0 with motion.frames");
+  if (!c.segments.empty() || !c.vertices.empty() || c.sphereEnabled)
+    fail(st.at(!c.segments.empty() ? "cycle.segments" : !c.vertices.empty() ? "cycle.vertices" : "cycle.sphere") +
+         ": cycle: the recorded beat moves the whole endocardium; expected no cycle.segments, cycle.vertices or "
+         "[cycle.sphere] with motion.frames");
+  m.frames = pathFromKey(st, "motion.frames", m.frames);
+  try {
+    m.frameSurfaces = io::readRecordedFrames(m.frames, m.count, p.endocardiumSurface,
+                                             p.volumeMesh.empty() ? p.endocardium : p.volumeMesh, p.markerEndocardium);
+  } catch (const std::invalid_argument& e) {
+    fail(at + e.what());
   }
 }
 
@@ -304,6 +344,7 @@ Scenario parseScenarioIn(std::string_view tomlText, const std::string& sourceNam
   for (const std::string& o : overrides) applyOverride(st, o);
   validate(st);
   resolveMeshModel(st);
+  resolveMotion(st);
   return st.scenario;
 }
 

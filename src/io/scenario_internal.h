@@ -48,6 +48,7 @@ struct TableSpec {
 
 const std::vector<KeySpec>& keyTable();      // in file order
 std::vector<KeySpec> meshModelKeys();        // [model] kind = "mesh" (scenario_mesh_keys.cpp)
+std::vector<KeySpec> motionKeys();           // [motion] (scenario_mesh_keys.cpp)
 const std::vector<TableSpec>& tableTable();  // parents before children
 const KeySpec* findKey(std::string_view dotted);
 const TableSpec* findTable(std::string_view dotted);

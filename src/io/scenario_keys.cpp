@@ -327,7 +327,7 @@ std::vector<KeySpec> buildKeyTable() {
   std::vector<KeySpec> table;
   for (const SectionKeys section :
        {&scenarioKeys, &simulationKeys, &modelKeys, &meshModelKeys, &tissueKeys, &cycleKeys, &cycleSphereKeys,
-        &cycleInconsistentKeys, &bloodKeys, &containerKeys, &circulationKeys, &lumpedCirculationKeys, &outputKeys}) {
+        &cycleInconsistentKeys, &bloodKeys, &containerKeys, &circulationKeys, &lumpedCirculationKeys, &motionKeys, &outputKeys}) {
     std::vector<KeySpec> rows = section();
     std::move(rows.begin(), rows.end(), std::back_inserter(table));
   }
@@ -355,6 +355,7 @@ const std::vector<TableSpec>& tableTable() {
       {"blood", nullptr, nullptr},
       {"container", nullptr, nullptr},
       {"circulation", nullptr, nullptr},
+      {"motion", nullptr, nullptr},
       {"output", nullptr, nullptr},
   };
   return tables;

@@ -88,4 +88,19 @@ std::vector<KeySpec> meshModelKeys() {
   };
 }
 
+// [motion]: a recorded beat driving a patient's wall (issue 16 item 5); the frames are read in
+// scenario_file.cpp.
+std::vector<KeySpec> motionKeys() {
+  return {
+      stringKey("motion.frames", HS_FIELD(motion.frames), false,
+                "model.kind = \"mesh\", optional: a recorded beat, the endocardium's file pattern with {frame} or "
+                "{frame:03d} (relative to the scenario file); each frame is the endocardium moved (its vertices and "
+                "triangles), frame 0 at end-diastole. The endocardium follows them; \"\" = heartsim's own cycle."),
+      intKey("motion.count", HS_FIELD(motion.count), 0, "",
+             "Frames in the recorded beat, numbered from 0 (at least 2 with motion.frames).", 1000),
+      realKey("motion.period", HS_FIELD(motion.period), ge(0), "s",
+              "The recorded beat's length; it sets the heart rate (at least 0.24 s with motion.frames, 250 bpm)."),
+  };
+}
+
 }  // namespace hs::io::detail

@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
+#include "io/scenario_file.h"
+#include "recorded_beat_frames.h"
 
 namespace hs::testing {
 namespace {
@@ -40,6 +42,31 @@ TEST(CliMeshHeart, IdealizedLvRunsFromAnyDirectory) {
   EXPECT_GT(j["model"]["mitral_area_cm2"].get<double>(), 1);
   EXPECT_GT(j["model"]["long_axis_mm"].get<double>(), 50);
   EXPECT_TRUE(j["model"]["aortic_root_diameter_mm"].is_null());
+}
+
+TEST(CliMeshHeart, ARecordedBeatDrivesTheWallAndItsReportComparesTheVolumes) {
+  // biv-me's endocardium scaled into 25 frames that eject 30% (tests/support/recorded_beat_frames.h).
+  const auto dir = scratchDir("mesh_heart_motion");
+  const std::string endo = std::string(HS_TEST_DATA_DIR) + "/meshes/bivme_patient1/patient1_LV_ENDOCARDIAL_000.obj";
+  const auto read = io::parseScenario("[model]\nkind = \"mesh\"\nendocardium = \"" + endo + "\"\n", "x.toml");
+  writeFrames(dir / "beat", scaledFrames(read.patient.endocardiumSurface, 25, 0.3, 0.36));
+  std::ofstream(dir / "recorded.toml")
+      << "[simulation]\ndt = 0.002\niterations = 10\n[model]\nkind = \"mesh\"\nendocardium = \"beat/frame_000.obj\"\n"
+         "[motion]\nframes = \"beat/frame_{frame:03d}.obj\"\ncount = 25\nperiod = 0.8\n";
+  const CliResult r = runHeartsim("run recorded.toml --duration 2.5 --threads 1 --json --out out", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& motion = j["motion"];
+  EXPECT_EQ(motion["frames"], 25);
+  EXPECT_NEAR(motion["period_s"].get<double>(), 0.8, 1e-6);
+  EXPECT_NEAR(motion["recorded_ejection_fraction"].get<double>(), 0.3, 1e-4);
+  EXPECT_LT(motion["volume_error_max"].get<double>(), 0.02);
+  EXPECT_NEAR(j["heart"]["ejection_fraction"].get<double>(), motion["recorded_ejection_fraction"].get<double>(), 0.01);
+  EXPECT_EQ(j["tissue"]["inverted_tets"], 0);
+  // Without a recording there is no motion to report: null, not zeros.
+  const CliResult plain = runHeartsim("run idealized-lv --duration 0.01 --threads 1 --json --out plain", dir);
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  EXPECT_TRUE(nlohmann::json::parse(plain.out)["motion"].is_null());
 }
 
 }  // namespace

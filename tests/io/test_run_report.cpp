@@ -54,7 +54,7 @@ TEST(RunReport, HeartRunHasItsKeysInOrder) {
   const nlohmann::ordered_json report = runReport(scenario(), timing, heartRun(), "out/dir");
   EXPECT_EQ(keys(report), (std::vector<std::string>{"scenario", "steps", "sim_time_s", "dt_s", "setup_s", "wall_s",
                                                     "steps_per_s", "threads", "iterations", "state_hash", "tissue",
-                                                    "cavity", "beats", "heart", "output_dir"}));
+                                                    "cavity", "beats", "heart", "motion", "output_dir"}));
   EXPECT_EQ(report["state_hash"], "0000000000abcdef");
   EXPECT_DOUBLE_EQ(report["steps_per_s"].get<double>(), 150.0);
   EXPECT_EQ(report["beats"], 3);
@@ -66,6 +66,21 @@ TEST(RunReport, HeartRunHasItsKeysInOrder) {
   EXPECT_NEAR(report["heart"]["stroke_volume_ml"].get<double>(), 70.0, 1e-9);
   EXPECT_NEAR(report["heart"]["cardiac_output_l_min"].get<double>(), 4.2, 1e-9);
   EXPECT_FALSE(report.contains("blood"));
+  EXPECT_TRUE(report["motion"].is_null());  // no recorded beat: nothing to compare, not zeros
+}
+
+TEST(RunReport, ARecordedBeatIsReportedBesideTheHeart) {
+  cardiac::RunSummary run = heartRun();
+  run.motionFrameVolumes = {120e-6, 80e-6, 50e-6, 90e-6};
+  run.motionPeriod = 0.9;
+  run.motionVolumeErrorMax = 0.012;
+  const nlohmann::ordered_json m = runReport(scenario(), RunTiming{0.5, 2.0, 2}, run, "out/dir")["motion"];
+  EXPECT_EQ(m["frames"], 4);
+  EXPECT_DOUBLE_EQ(m["period_s"].get<double>(), 0.9);
+  EXPECT_NEAR(m["recorded_edv_ml"].get<double>(), 120.0, 1e-9);
+  EXPECT_NEAR(m["recorded_esv_ml"].get<double>(), 50.0, 1e-9);
+  EXPECT_NEAR(m["recorded_ejection_fraction"].get<double>(), 70.0 / 120.0, 1e-12);
+  EXPECT_DOUBLE_EQ(m["volume_error_max"].get<double>(), 0.012);
 }
 
 TEST(RunReport, BloodPartTakesTheRunsWorst) {

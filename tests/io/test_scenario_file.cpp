@@ -28,6 +28,9 @@ std::string writeTemp(const std::string& fileName, const std::string& text) {
   return path.string();
 }
 
+const std::string kBivmeEndocardium =
+    std::string(HS_TEST_DATA_DIR) + "/meshes/bivme_patient1/patient1_LV_ENDOCARDIAL_000.obj";
+
 std::string readFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;
@@ -157,7 +160,18 @@ struct KeyCase {
 // A value read in clinical units and kept in SI, to the float precision of the file reader.
 bool near(double actual, double expected) { return std::abs(actual - expected) <= 1e-6 * std::abs(expected); }
 
+// Two frames of a recorded beat (biv-me's endocardium twice) for the motion.frames case; the
+// pattern naming them.
+std::string keyCaseFrames() {
+  const auto dir = std::filesystem::path(::testing::TempDir()) / "heartsim_key_frames";
+  std::filesystem::create_directories(dir);
+  for (const char* name : {"endo_0.obj", "endo_1.obj"})
+    std::filesystem::copy_file(kBivmeEndocardium, dir / name, std::filesystem::copy_options::overwrite_existing);
+  return (dir / "endo_{frame}.obj").lexically_normal().string();
+}
+
 std::vector<KeyCase> everyKeyCase() {
+  const std::string frames = keyCaseFrames();
   return {
       {"scenario.name", "lesson one", [](const Scenario& s) { return s.name == "lesson one"; }},
       {"scenario.description", "\"a \\\"quoted\\\" text\"",
@@ -313,6 +327,10 @@ std::vector<KeyCase> everyKeyCase() {
        [](const Scenario& s) { return s.circulation.wallMotion.longitudinal == Real(0.1); }},
       {"circulation.radial_shortening", "0.2",
        [](const Scenario& s) { return s.circulation.wallMotion.radial == Real(0.2); }},
+      {"motion.frames", "\"" + frames + "\"",
+       [frames](const Scenario& s) { return s.motion.frames == frames && s.motion.frameSurfaces.size() == 2; }},
+      {"motion.count", "3", [](const Scenario& s) { return s.motion.count == 3; }},
+      {"motion.period", "0.9", [](const Scenario& s) { return s.motion.period == Real(0.9); }},
       {"output.vtk", "true", [](const Scenario& s) { return s.output.vtk; }},
       {"output.vtk_every", "3", [](const Scenario& s) { return s.output.vtkEvery == 3; }},
   };
@@ -329,10 +347,11 @@ TEST(ScenarioFile, EveryKeyRoundTripsThroughSet) {
     if (c.key == "cycle.sphere.centre") overrides.push_back("cycle.sphere.radius=1");
     // A mesh heart needs its file (read as the scenario is) and beats without blood: its kind
     // round-trips here alone, with the biv-me endocardium, and stays out of the all-at-once set.
-    const bool meshKind = c.key == "model.kind";
+    // A recorded beat (motion.frames) needs such a heart, its frames and their count.
+    const bool meshKind = c.key == "model.kind" || c.key == "motion.frames";
     if (meshKind) {
-      overrides.push_back("model.endocardium=" + std::string(HS_TEST_DATA_DIR) +
-                          "/meshes/bivme_patient1/patient1_LV_ENDOCARDIAL_000.obj");
+      if (c.key == "motion.frames") overrides.insert(overrides.end(), {"model.kind=\"mesh\"", "motion.count=2", "motion.period=0.8"});
+      overrides.push_back("model.endocardium=" + kBivmeEndocardium);
       overrides.push_back("model.wall_thickness=0.01");  // heart-only's is the thesis's 0.5 m
     }
     const Scenario s = loadScenario("heart-only", overrides);
@@ -349,7 +368,7 @@ TEST(ScenarioFile, EveryKeyRoundTripsThroughSet) {
 
   // All at once, then through scenarioToToml and back: nothing is lost.
   const Scenario s = loadScenario("heart-only", all);
-  auto inAll = [](const KeyCase& c) { return c.key != "model.kind"; };
+  auto inAll = [](const KeyCase& c) { return c.key != "model.kind" && c.key != "motion.frames"; };
   for (const KeyCase& c : cases) EXPECT_TRUE(!inAll(c) || c.check(s)) << c.key;
   const std::string text = scenarioToToml(s);
   const Scenario back = parseScenario(text, "dump.toml");

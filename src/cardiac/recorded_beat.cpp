@@ -1,0 +1,138 @@
+#include "cardiac/recorded_beat.h"
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "pbd/closest_point.h"
+#include "pbd/surface_mesh.h"
+
+namespace hs::cardiac {
+namespace {
+
+// Where a wall vertex sits on the recorded surface: a triangle's corners and their weights.
+struct SurfacePoint {
+  pbd::Triangle corners{};
+  std::array<double, 3> weight{};
+};
+
+// Barycentric weights of q in triangle abc (q in its plane; Ericson 2005, 3.4).
+std::array<double, 3> barycentric(const Vec3d& q, const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+  const Vec3d e0 = b - a, e1 = c - a, r = q - a;
+  const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1), d20 = r.dot(e0), d21 = r.dot(e1);
+  const double denominator = d00 * d11 - d01 * d01;
+  const double v = (d11 * d20 - d01 * d21) / denominator;
+  const double w = (d00 * d21 - d01 * d20) / denominator;
+  return {1 - v - w, v, w};
+}
+
+// The point of `surface` (heart frame) closest to p, by brute force over its triangles (a few
+// thousand, once at start-up); degenerate triangles hold no point of their own.
+SurfacePoint closestSurfacePoint(const Vec3d& p, const std::vector<Vec3d>& x, const std::vector<pbd::Triangle>& triangles) {
+  SurfacePoint best;
+  double bestDistance = std::numeric_limits<double>::infinity();
+  for (const pbd::Triangle& t : triangles) {
+    const Vec3d &a = x[t[0]], &b = x[t[1]], &c = x[t[2]];
+    if (!((b - a).cross(c - a).squaredNorm() > 0)) continue;
+    const Vec3d q = pbd::closestPointOnTriangleOf(p, a, b, c);
+    const double d = (q - p).squaredNorm();
+    if (d < bestDistance) {
+      bestDistance = d;
+      best.corners = t;
+      best.weight = barycentric(q, a, b, c);
+    }
+  }
+  return best;
+}
+
+void checkFrames(const std::vector<Surface>& frames, double period) {
+  if (frames.size() < 2)
+    throw std::invalid_argument("motion.count: a recorded beat needs at least 2 frames, got " +
+                                std::to_string(frames.size()));
+  if (!(period > 0) || !std::isfinite(period))
+    throw std::invalid_argument("motion.period: expected a positive beat length in s, got " + std::to_string(period));
+  for (std::size_t f = 1; f < frames.size(); ++f)
+    if (frames[f].vertices.size() != frames[0].vertices.size() || frames[f].triangles != frames[0].triangles)
+      throw std::invalid_argument("motion.frames: frame " + std::to_string(f) +
+                                  " has other vertices or triangles than frame 0; expected the same mesh moved");
+}
+
+}  // namespace
+
+SplineWeights periodicCatmullRom(double time, double period, int count) {
+  double phase = std::fmod(time / period, 1.0);
+  if (phase < 0) phase += 1;
+  const double position = phase * count;
+  const int i = std::min(int(position), count - 1);
+  const double u = position - i, u2 = u * u, u3 = u2 * u;
+  SplineWeights s;
+  for (int k = 0; k < 4; ++k) s.knot[k] = ((i + k - 1) % count + count) % count;
+  // The uniform Catmull-Rom basis: p(u) = sum_k weight_k p_(i-1+k).
+  s.weight[0] = 0.5 * (-u3 + 2 * u2 - u);
+  s.weight[1] = 0.5 * (3 * u3 - 5 * u2 + 2);
+  s.weight[2] = 0.5 * (-3 * u3 + 4 * u2 + u);
+  s.weight[3] = 0.5 * (u3 - u2);
+  return s;
+}
+
+RecordedBeat::RecordedBeat(const LvModel& model, const PatientWall& wall, const std::vector<Surface>& frames,
+                           double period, Index firstParticle)
+    : m_period(period), m_firstParticle(firstParticle) {
+  checkFrames(frames, period);
+  std::vector<std::vector<Vec3d>> placed(frames.size());
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    for (const Vec3& v : frames[f].vertices) placed[f].push_back(wall.frame.toHeart(v.cast<double>()));
+    const double cube = std::pow(wall.frame.metresPerUnit, 3);
+    m_frameVolume.push_back(std::abs(pbd::cappedSignedVolume(frames[f].vertices, frames[f].triangles)) * cube);
+  }
+  m_offset.resize(frames.size());
+  for (Index i = 0; i < Index(wall.endoVertices); ++i) {
+    if (wall.basePlate[i]) continue;
+    const Index vertex = 2 * i;  // lvModelFromPatientWall's pairing
+    const Vec3& rest = model.mesh.vertices[vertex];
+    const SurfacePoint tie = closestSurfacePoint(rest.cast<double>(), placed[0], frames[0].triangles);
+    m_driven.push_back(vertex);
+    m_rest.push_back(rest);
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+      Vec3d offset = Vec3d::Zero();
+      for (int c = 0; c < 3; ++c) offset += tie.weight[c] * (placed[f][tie.corners[c]] - placed[0][tie.corners[c]]);
+      m_offset[f].push_back(offset.cast<Real>());
+    }
+  }
+}
+
+void RecordedBeat::drive(double time, std::vector<Vec3>& predicted) const {
+  const SplineWeights s = periodicCatmullRom(time, m_period, frameCount());
+  for (std::size_t k = 0; k < m_driven.size(); ++k) {
+    Vec3d x = m_rest[k].cast<double>();
+    for (int j = 0; j < 4; ++j) x += s.weight[j] * m_offset[s.knot[j]][k].cast<double>();
+    predicted[m_firstParticle + m_driven[k]] = x.cast<Real>();
+  }
+}
+
+double RecordedBeat::recordedVolume(double time) const {
+  const SplineWeights s = periodicCatmullRom(time, m_period, frameCount());
+  double volume = 0;
+  for (int j = 0; j < 4; ++j) volume += s.weight[j] * m_frameVolume[s.knot[j]];
+  return volume;
+}
+
+void RecordedBeat::observe(double time, double cavityVolume) {
+  const double recorded = recordedVolume(time);
+  m_volumeErrorMax = std::max(m_volumeErrorMax, std::abs(cavityVolume - recorded) / recorded);
+}
+
+double RecordedBeat::systolicFraction() const {
+  std::size_t smallest = 0;
+  for (std::size_t f = 1; f < m_frameVolume.size(); ++f)
+    if (m_frameVolume[f] < m_frameVolume[smallest]) smallest = f;
+  return double(smallest) / double(m_frameVolume.size());
+}
+
+void RecordedBeat::save(pbd::StateWriter& w) const { w.put(m_volumeErrorMax); }
+
+void RecordedBeat::load(pbd::StateReader& r) { r.get(m_volumeErrorMax); }
+
+}  // namespace hs::cardiac
