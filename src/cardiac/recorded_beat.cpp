@@ -1,5 +1,6 @@
 #include "cardiac/recorded_beat.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -47,6 +48,48 @@ SurfacePoint closestSurfacePoint(const Vec3d& p, const std::vector<Vec3d>& x, co
   return best;
 }
 
+// Per vertex of `triangles`: the sum of the triangles' cross products (twice the
+// area-weighted normal) and a third of their areas, at positions x[firstParticle + vertex].
+void accumulateNormalsAndAreas(const std::vector<pbd::Triangle>& triangles, const std::vector<Vec3>& x,
+                               Index firstParticle, std::vector<Vec3d>& normal, std::vector<double>& area) {
+  std::fill(normal.begin(), normal.end(), Vec3d::Zero());
+  std::fill(area.begin(), area.end(), 0.0);
+  for (const pbd::Triangle& t : triangles) {
+    const Vec3d a = x[firstParticle + t[0]].cast<double>();
+    const Vec3d cross = (x[firstParticle + t[1]].cast<double>() - a).cross(x[firstParticle + t[2]].cast<double>() - a);
+    const double third = cross.norm() / 6;
+    for (Index v : t) {
+      normal[v] += cross;
+      area[v] += third;
+    }
+  }
+}
+
+// Edges from an annulus within which the epicardium is left to the wall's constraints (see the
+// header): two rings of cavity vertices around each annulus.
+constexpr int kAnnulusReach = 2;
+
+// Per model vertex: an endocardial vertex within `reach` edges of the cavity surface from a
+// vertex of the mitral or aortic ring.
+std::vector<std::uint8_t> nearAnnuli(const LvModel& model, int reach) {
+  const std::vector<std::vector<Index>> neighbours = pbd::vertexNeighbours(model.mesh.vertices.size(), model.cavitySurface);
+  std::vector<std::uint8_t> near(model.mesh.vertices.size(), 0);
+  std::vector<Index> front(model.mitralRing);
+  front.insert(front.end(), model.aorticRing.begin(), model.aorticRing.end());
+  for (Index v : front) near[v] = 1;
+  for (int step = 0; step < reach; ++step) {
+    std::vector<Index> next;
+    for (Index v : front)
+      for (Index w : neighbours[v])
+        if (!near[w]) {
+          near[w] = 1;
+          next.push_back(w);
+        }
+    front = std::move(next);
+  }
+  return near;
+}
+
 void checkFrames(const std::vector<Surface>& frames, double period) {
   if (frames.size() < 2)
     throw std::invalid_argument("motion.count: a recorded beat needs at least 2 frames, got " +
@@ -79,7 +122,7 @@ SplineWeights periodicCatmullRom(double time, double period, int count) {
 
 RecordedBeat::RecordedBeat(const LvModel& model, const PatientWall& wall, const std::vector<Surface>& frames,
                            double period, Index firstParticle)
-    : m_period(period), m_firstParticle(firstParticle) {
+    : m_model(&model), m_period(period), m_firstParticle(firstParticle) {
   checkFrames(frames, period);
   std::vector<std::vector<Vec3d>> placed(frames.size());
   for (std::size_t f = 0; f < frames.size(); ++f) {
@@ -93,7 +136,7 @@ RecordedBeat::RecordedBeat(const LvModel& model, const PatientWall& wall, const 
     const Index vertex = 2 * i;  // lvModelFromPatientWall's pairing
     const Vec3& rest = model.mesh.vertices[vertex];
     const SurfacePoint tie = closestSurfacePoint(rest.cast<double>(), placed[0], frames[0].triangles);
-    m_driven.push_back(vertex);
+    m_endocardial.push_back(vertex);
     m_rest.push_back(rest);
     for (std::size_t f = 0; f < frames.size(); ++f) {
       Vec3d offset = Vec3d::Zero();
@@ -101,15 +144,62 @@ RecordedBeat::RecordedBeat(const LvModel& model, const PatientWall& wall, const 
       m_offset[f].push_back(offset.cast<Real>());
     }
   }
+  // The epicardial patches at rest: the endocardium's normals and areas (its cavity triangles
+  // face into the wall), the epicardium's areas (the outer faces, all of odd vertices).
+  const std::size_t n = model.mesh.vertices.size();
+  std::vector<Vec3d> normal(n), unusedNormal(n);
+  std::vector<double> endoArea(n), epiArea(n);
+  accumulateNormalsAndAreas(model.cavitySurface, model.mesh.vertices, 0, normal, endoArea);
+  std::vector<pbd::Triangle> outer;
+  for (const pbd::Triangle& t : model.surface)
+    if (t[0] % 2 == 1 && t[1] % 2 == 1 && t[2] % 2 == 1) outer.push_back(t);
+  accumulateNormalsAndAreas(outer, model.mesh.vertices, 0, unusedNormal, epiArea);
+  const std::vector<std::uint8_t> nearAnnulus = nearAnnuli(model, kAnnulusReach);
+  for (Index vertex : m_endocardial) {
+    if (nearAnnulus[vertex]) continue;
+    const Vec3d normalAtRest = normal[vertex].normalized();
+    const Vec3d offset = (model.mesh.vertices[vertex + 1] - model.mesh.vertices[vertex]).cast<double>();
+    EpicardialPatch patch{};
+    patch.vertex = vertex + 1;
+    patch.restThickness = std::max(offset.dot(normalAtRest), 0.0);
+    patch.across = offset - patch.restThickness * normalAtRest;
+    patch.restArea = endoArea[vertex];
+    const double widening = std::sqrt(epiArea[vertex + 1] / endoArea[vertex]);  // 1 + h0 / r0
+    patch.restRadius = widening > 1 + 1e-6 ? patch.restThickness / (widening - 1) : 0.0;
+    m_epicardium.push_back(patch);
+  }
+  m_driven = m_endocardial;
+  for (const EpicardialPatch& patch : m_epicardium) m_driven.push_back(patch.vertex);
+  m_normal.resize(n);
+  m_area.resize(n);
+}
+
+double RecordedBeat::thicknessAt(const EpicardialPatch& patch, double area) const {
+  const double stretch = area / patch.restArea;  // a / a0
+  if (patch.restRadius == 0) return patch.restThickness / stretch;
+  const double r0 = patch.restRadius, h0 = patch.restThickness;
+  const double r = r0 * std::sqrt(stretch);
+  return std::cbrt(std::pow(r0 + h0, 3) - std::pow(r0, 3) + std::pow(r, 3)) - r;
+}
+
+void RecordedBeat::placeEpicardium(std::vector<Vec3>& predicted) const {
+  accumulateNormalsAndAreas(m_model->cavitySurface, predicted, m_firstParticle, m_normal, m_area);
+  for (const EpicardialPatch& patch : m_epicardium) {
+    const Index vertex = patch.vertex - 1;
+    const Vec3d x = predicted[m_firstParticle + vertex].cast<double>();
+    const Vec3d epicardium = x + thicknessAt(patch, m_area[vertex]) * m_normal[vertex].normalized() + patch.across;
+    predicted[m_firstParticle + patch.vertex] = epicardium.cast<Real>();
+  }
 }
 
 void RecordedBeat::drive(double time, std::vector<Vec3>& predicted) const {
   const SplineWeights s = periodicCatmullRom(time, m_period, frameCount());
-  for (std::size_t k = 0; k < m_driven.size(); ++k) {
+  for (std::size_t k = 0; k < m_endocardial.size(); ++k) {
     Vec3d x = m_rest[k].cast<double>();
     for (int j = 0; j < 4; ++j) x += s.weight[j] * m_offset[s.knot[j]][k].cast<double>();
-    predicted[m_firstParticle + m_driven[k]] = x.cast<Real>();
+    predicted[m_firstParticle + m_endocardial[k]] = x.cast<Real>();
   }
+  placeEpicardium(predicted);
 }
 
 double RecordedBeat::recordedVolume(double time) const {

@@ -20,8 +20,28 @@
 // `heartsim mesh` measures a cavity); the recorded volume at time t is the same spline of the
 // frames' volumes.
 //
+// The epicardium. Left to the wall's constraints (one tet across the wall), the epicardium of a
+// contracting recording folded: its edges and areas resist the shortening the recording asks of
+// them, and the surface buckles (biv-me ejecting 30%: folds in the outer wall at end-systole,
+// the worst tet 58% off its volume). The myocardium is incompressible, so the wall thickens as
+// the endocardium shrinks; each epicardial vertex is placed by that rule instead, from its
+// endocardial partner i along the endocardium's normal n_i(t):
+//   x_epi = x_i + h_i(t) n_i(t) + s_i,
+// with s_i the rest offset's part across n_i (kept) and h_i(t) the thickness that keeps the
+// volume of the wall's patch over i. The patch is a piece of a spherical shell of solid angle
+// Omega (its endocardial area a = Omega r^2, its epicardial area Omega (r + h)^2, found from the
+// rest areas: (1 + h0 / r0)^2 = a_epi / a_endo), so as the endocardial area goes from a0 to a,
+// r = r0 sqrt(a / a0) and
+//   (r + h)^3 - r^3 = (r0 + h0)^3 - r0^3.
+// Where the wall is flat or concave (a_epi <= a_endo) the thin-wall limit h = h0 a0 / a holds.
+// Within two edges of an annulus the rule does not hold (the endocardium's normal turns sharply
+// over the rim and between the two annuli, and the tets there reach across: one flattened to
+// nothing at 0.17 s of biv-me ejecting 30%): there the epicardium is left to the constraints, as
+// the fibrous rings hold the valves.
+//
 // The driven vertices are kinematic (inverse mass 0): the recording, not the constraints or
-// the blood, sets where the endocardium is.
+// the blood, sets where the wall is; only the vertices of a base plate made for a truncated
+// ventricle are left to the constraints.
 #include <vector>
 
 #include "cardiac/lv_model.h"
@@ -47,7 +67,8 @@ class RecordedBeat {
   RecordedBeat(const LvModel& model, const PatientWall& wall, const std::vector<Surface>& frames, double period,
                Index firstParticle);
 
-  // Sets the driven particles' predictions to the recorded shape at `time` (s).
+  // Sets the driven particles' predictions to the recorded shape at `time` (s): the
+  // endocardium from the frames, then the epicardium over it.
   void drive(double time, std::vector<Vec3>& predicted) const;
   // The recorded cavity volume (m^3) at `time`.
   [[nodiscard]] double recordedVolume(double time) const;
@@ -68,9 +89,25 @@ class RecordedBeat {
   void load(pbd::StateReader& r);
 
  private:
-  std::vector<Index> m_driven;                 // model vertices
-  std::vector<Vec3> m_rest;                    // per driven vertex
-  std::vector<std::vector<Vec3>> m_offset;     // per frame, per driven vertex: from its rest (m)
+  // The epicardial partner of a driven endocardial vertex (see the header's comment).
+  struct EpicardialPatch {
+    Index vertex;          // model vertex 2i + 1
+    Vec3d across;          // s_i: the rest offset's part across the endocardium's normal (m)
+    double restArea;       // a0: the endocardial vertex's area at rest (m^2)
+    double restThickness;  // h0 (m)
+    double restRadius;     // r0 of the spherical patch (m); 0 where the wall is flat or concave
+  };
+  [[nodiscard]] double thicknessAt(const EpicardialPatch& patch, double area) const;
+  void placeEpicardium(std::vector<Vec3>& predicted) const;
+
+  const LvModel* m_model = nullptr;
+  std::vector<Index> m_driven;                 // model vertices: the endocardial ones, then the epicardial
+  std::vector<Index> m_endocardial;            // driven endocardial model vertices (2i)
+  std::vector<Vec3> m_rest;                    // per driven endocardial vertex
+  std::vector<std::vector<Vec3>> m_offset;     // per frame, per driven endocardial vertex: from its rest (m)
+  std::vector<EpicardialPatch> m_epicardium;   // the driven epicardial vertices
+  mutable std::vector<Vec3d> m_normal;         // scratch per model vertex: the endocardium's normal (x 2 area)
+  mutable std::vector<double> m_area;          // scratch per model vertex: the endocardium's area
   std::vector<double> m_frameVolume;           // m^3, per frame
   double m_period = 0;
   Index m_firstParticle = 0;

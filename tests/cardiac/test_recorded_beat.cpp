@@ -89,8 +89,8 @@ TEST(RecordedBeat, FramesVolumesAreTheAnalyticCurveInCubicMetres) {
   for (int f = 0; f < 25; ++f)
     EXPECT_NEAR(recorded.frameVolumes()[f], v0 * volumeRatio(f / 25.0, 0.4, 0.36), 1e-5 * v0) << f;
   EXPECT_NEAR(recorded.systolicFraction(), 9.0 / 25.0, 1e-12);  // frame 9 is the smallest
-  // Every endocardial vertex off a base plate is driven (this ventricle's base is in the file).
-  EXPECT_EQ(recorded.drivenVertices().size(), wall.endoVertices);
+  // Every endocardial vertex off a base plate is driven (this ventricle's base is in the file),
+  EXPECT_GT(recorded.drivenVertices().size(), wall.endoVertices);  // and most of their epicardial partners
   // At t = 0 the wall is where it rests.
   std::vector<Vec3> predicted(model.mesh.vertices.size(), Vec3::Zero());
   recorded.drive(0.0, predicted);

@@ -3,6 +3,7 @@
 // of known volumes.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -132,6 +133,13 @@ TEST(ScenarioMotion, BivmeFollowsARecordedBeatOfKnownVolumes) {
   monitor.finish();
   EXPECT_NEAR(monitor.beats().means().ejectionFraction, 0.35, 0.01);
   EXPECT_EQ(sim.tissueStats().invertedTets, 0u);
+  // The epicardium placed by incompressibility keeps the wall's tets near their volumes (left
+  // to the constraints it folded, the worst 58% off at 30% ejection; placed, 37% there and 47%
+  // here, at 35%, both beside the annuli).
+  std::printf("worst tet volume error %.3f, mean %.4f\n", monitor.extremes().volumeErrorMax,
+              monitor.extremes().volumeErrorMeanSum / double(monitor.observedSteps()));
+  EXPECT_LT(monitor.extremes().volumeErrorMax, 0.5);
+  EXPECT_LT(monitor.extremes().volumeErrorMeanSum / double(monitor.observedSteps()), 0.03);
 }
 
 }  // namespace
