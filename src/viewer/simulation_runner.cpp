@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <exception>
 
 #include "io/scenario_file.h"
@@ -80,6 +81,13 @@ void readStatus(const SimulationState& state, ViewerStatus& status) {
   status.hasBlood = sim.hasBlood();
   status.wallYields = sim.wallCanYield();
   status.physiological = scenario.cycle.mode == cardiac::TimingMode::Physiological;
+  status.recordedBeat.clear();
+  if (const cardiac::RecordedBeat* recorded = sim.recordedBeat()) {
+    char text[80];
+    std::snprintf(text, sizeof text, "%d frames over %.2f s (%.0f bpm)", recorded->frameCount(), recorded->period(),
+                  60.0 / recorded->period());
+    status.recordedBeat = text;
+  }
   status.heartSize = float(scenario.geometry.endoRadius);
   status.phase = sim.hasHeart() && scenario.cycle.enabled ? cardiac::phaseName(step.phase) : "";
   status.cavity = sim.hasHeart() ? step.cavity : -1;

@@ -136,6 +136,15 @@ void scenarioSection(ViewerControls& c, const ViewerStatus& s, const std::vector
             "afterload and contractility are in the Circulation section below.");
     return;
   }
+  if (!s.recordedBeat.empty()) {
+    // A recorded beat ([motion]) moves the wall as recorded: no contraction, rate or region of
+    // the cycle's applies (the scenario refuses them), so none is offered.
+    ImGui::TextDisabled("a recorded beat drives the wall");
+    tooltip(("[motion]: the endocardium follows " + s.recordedBeat +
+             " recorded from a patient; the recording sets the heart rate and how the wall moves")
+                .c_str());
+    return;
+  }
   if (ImGui::Checkbox("cardiac cycle", &c.cycleEnabled)) c.cycleChanged = true;
   tooltip("Let the wall beat (systole / diastole); changing it restarts the simulation");
   ImGui::BeginDisabled(!c.cycleEnabled);
@@ -245,7 +254,7 @@ void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
   if (status.hasBlood && section("Blood", PanelSection::Blood, open))
     drawBloodSection(controls.blood, status.resolution, status.hasHeart, controls.circulation.lumped,
                      status.wallYields);
-  if (status.hasHeart && section("Beating region", PanelSection::Region, open))
+  if (status.hasHeart && status.recordedBeat.empty() && section("Beating region", PanelSection::Region, open))
     drawRegionSection(controls.region, status.region);
   if (section("Display", PanelSection::Display, open)) displaySection(controls, status);
   endSidePanel();

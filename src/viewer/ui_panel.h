@@ -69,6 +69,7 @@ struct ViewerStatus {
   bool hasHeart = false, hasBlood = false;
   bool wallYields = false;          // some wall vertex is free for two-way coupling to move
   bool physiological = false;       // cycle timing mode (heart rate applies)
+  std::string recordedBeat;         // [motion]: "25 frames over 0.80 s (75 bpm)"; "" = none
   float heartSize = 1;              // m, the cavity's radius at the base: scales the beat's sliders
   double speedMax = 1;              // m/s at the top of the blood colour scale
   double pressureMax = 1;           // mmHg at the top of the pressure colour scale
