@@ -72,6 +72,7 @@ void RunExtremes::add(const StepSample& sample, bool heart) {
   if (heart) {
     volumeErrorMax = std::max(volumeErrorMax, double(sample.tissue.volumeErrorMax));
     volumeErrorMeanSum += double(sample.tissue.volumeErrorMean);
+    surfaceTurnMax = std::max(surfaceTurnMax, sample.surfaceTurn);
     cavityMin = std::min(cavityMin, sample.cavity);
     cavityMax = std::max(cavityMax, sample.cavity);
   }
@@ -99,6 +100,13 @@ RunMonitor::RunMonitor(const HeartSimulation& sim, MonitorSettings settings)
   if (sim.hasHeart() && settings.pump) m_last.cavity = double(sim.cavityVolume());
   if (sim.lumped() && settings.pump)
     m_circulation.emplace(double(sim.scenario().simulation.dt), settings.lumpedSamples);
+  // The wall's surface hinges and their angles at rest (the model's vertices are the first
+  // particles, heart_simulation.h), to find creases.
+  if (sim.hasHeart() && settings.pump) {
+    const LvModel& model = sim.model();
+    m_hinges = pbd::surfaceHinges(model.surface);
+    for (const pbd::Hinge& h : m_hinges) m_restHingeAngles.push_back(pbd::hingeAngle(h, model.mesh.vertices));
+  }
 }
 
 bool RunMonitor::check(const TissueStats& tissue, double cavity) {
@@ -128,7 +136,10 @@ const Verdict& RunMonitor::observe() {
   sample.time = m_sim.time();
   sample.phase = m_sim.lastPhase();
   sample.tissue = m_sim.tissueStats();
-  if (m_sim.hasHeart() && m_settings.pump) sample.cavity = double(m_sim.cavityVolume());
+  if (m_sim.hasHeart() && m_settings.pump) {
+    sample.cavity = double(m_sim.cavityVolume());
+    sample.surfaceTurn = pbd::largestHingeTurn(m_hinges, m_restHingeAngles, m_sim.particles().position);
+  }
   if (!check(sample.tissue, sample.cavity)) return m_verdict;
   gather(sample);
   ++m_observed;
@@ -190,6 +201,7 @@ RunSummary RunMonitor::summary() const {
     r.tets = model.mesh.tets.size();
     r.surfaceTriangles = model.surface.size();
     r.volumeErrorMax = e.volumeErrorMax;
+    r.surfaceTurnMax = e.surfaceTurnMax;
     r.volumeErrorMean = m_observed > 0 ? e.volumeErrorMeanSum / double(m_observed) : 0.0;
     r.invertedTets = m_sim.tissueStats().invertedTets;
     r.restDeviation = m_sim.restDeviationRelative();
@@ -222,21 +234,21 @@ void Verdict::load(pbd::StateReader& r) { r.fields(issue.check, issue.what, step
 
 void StepSample::save(pbd::StateWriter& w) const {
   w.fields(step, startTime, time, phase, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
-           contraction, baseDescent, vesselFill);
+           contraction, baseDescent, vesselFill, surfaceTurn);
 }
 
 void StepSample::load(pbd::StateReader& r) {
   r.fields(step, startTime, time, phase, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
-           contraction, baseDescent, vesselFill);
+           contraction, baseDescent, vesselFill, surfaceTurn);
 }
 
 void RunExtremes::save(pbd::StateWriter& w) const {
-  w.fields(volumeErrorMax, volumeErrorMeanSum, cavityMin, cavityMax, bloodLostMax, bloodInsideWallMax, bloodSpeedMax,
+  w.fields(volumeErrorMax, volumeErrorMeanSum, surfaceTurnMax, cavityMin, cavityMax, bloodLostMax, bloodInsideWallMax, bloodSpeedMax,
            lastSecondFrom, densityErrorMeanSum, densityErrorMax, lastSecondSteps);
 }
 
 void RunExtremes::load(pbd::StateReader& r) {
-  r.fields(volumeErrorMax, volumeErrorMeanSum, cavityMin, cavityMax, bloodLostMax, bloodInsideWallMax, bloodSpeedMax,
+  r.fields(volumeErrorMax, volumeErrorMeanSum, surfaceTurnMax, cavityMin, cavityMax, bloodLostMax, bloodInsideWallMax, bloodSpeedMax,
            lastSecondFrom, densityErrorMeanSum, densityErrorMax, lastSecondSteps);
 }
 

@@ -18,6 +18,7 @@
 #include "cardiac/circulation_recorder.h"
 #include "cardiac/heart_simulation.h"
 #include "cardiac/lv_model.h"
+#include "pbd/surface_hinges.h"
 
 namespace hs::cardiac {
 
@@ -75,6 +76,9 @@ struct StepSample {
   // descent (m), the vessels' fill.
   std::optional<CirculationSample> lumped;
   double contraction = 0, baseDescent = 0, vesselFill = 1;
+  // With a heart and pump figures: the wall's surface's largest hinge turn from rest (radians,
+  // pbd/surface_hinges.h): tens of degrees where the wall creases.
+  double surfaceTurn = 0;
   [[nodiscard]] double pressure(FlowRegion region) const { return flowStep.pressure[std::size_t(region)]; }
   void save(pbd::StateWriter& w) const;
   void load(pbd::StateReader& r);
@@ -86,6 +90,7 @@ struct StepSample {
 struct RunExtremes {
   double volumeErrorMax = 0;
   double volumeErrorMeanSum = 0;  // sum over steps of the per-step mean
+  double surfaceTurnMax = 0;      // radians
   double cavityMin = std::numeric_limits<double>::infinity();
   double cavityMax = -std::numeric_limits<double>::infinity();
   std::size_t bloodLostMax = 0, bloodInsideWallMax = 0;
@@ -107,6 +112,7 @@ struct RunSummary {
   // Heart.
   std::size_t vertices = 0, tets = 0, surfaceTriangles = 0;
   double volumeErrorMax = 0, volumeErrorMean = 0;
+  double surfaceTurnMax = 0;     // radians: the wall surface's largest hinge turn from rest
   std::size_t invertedTets = 0;  // at the end
   Real restDeviation = 0;        // at the end
   Real minDihedralDeg = 0, maxAspectRatio = 0;
@@ -177,6 +183,8 @@ class RunMonitor {
   std::optional<CirculationRecorder> m_circulation;
   RunExtremes m_extremes;
   std::int64_t m_observed = 0;
+  std::vector<pbd::Hinge> m_hinges;     // of the wall's surface, with a heart
+  std::vector<double> m_restHingeAngles;
   bool check(const TissueStats& tissue, double cavity);
   [[nodiscard]] bool bloodLimited() const;
   void gather(StepSample& sample) const;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <numbers>
 #include <sstream>
 
 namespace hs::io {
@@ -78,6 +79,11 @@ void addHeartReport(nlohmann::ordered_json& report, const cardiac::RunSummary& r
       {"surface_triangles", run.surfaceTriangles},
       {"volume_error_max", run.volumeErrorMax},
       {"volume_error_mean", run.volumeErrorMean},
+      // The shape held (docs/reliability.md): the worst tet's volume change over the run (the
+      // same figure as volume_error_max, by the name the anatomy's checks use) and the surface's
+      // largest bend from rest, where a crease shows.
+      {"worst_tet_volume_error", run.volumeErrorMax},
+      {"surface_turn_max_deg", run.surfaceTurnMax * 180 / std::numbers::pi},
       {"inverted_tets", run.invertedTets},
       {"rest_deviation_final_rel", run.restDeviation},
       {"min_dihedral_deg", run.minDihedralDeg},
