@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
 #include "pbd/solver.h"
@@ -100,12 +101,19 @@ RunMonitor::RunMonitor(const HeartSimulation& sim, MonitorSettings settings)
   if (sim.hasHeart() && settings.pump) m_last.cavity = double(sim.cavityVolume());
   if (sim.lumped() && settings.pump)
     m_circulation.emplace(double(sim.scenario().simulation.dt), settings.lumpedSamples);
-  // The wall's surface hinges and their angles at rest (the model's vertices are the first
-  // particles, heart_simulation.h), to find creases.
+  // The wall's surface hinges that are smooth at rest (bent by less than kSmoothHinge) and their
+  // angles (the model's vertices are the first particles, heart_simulation.h), to find creases:
+  // a crease is a fold where the surface was smooth. The modelled corners (the base's rim, the
+  // vessels' roots, about 90 degrees) open and close with the motion by design and are left out.
   if (sim.hasHeart() && settings.pump) {
+    constexpr double kSmoothHinge = 30 * std::numbers::pi / 180;
     const LvModel& model = sim.model();
-    m_hinges = pbd::surfaceHinges(model.surface);
-    for (const pbd::Hinge& h : m_hinges) m_restHingeAngles.push_back(pbd::hingeAngle(h, model.mesh.vertices));
+    for (const pbd::Hinge& h : pbd::surfaceHinges(model.surface)) {
+      const double rest = pbd::hingeAngle(h, model.mesh.vertices);
+      if (std::abs(rest) >= kSmoothHinge) continue;
+      m_hinges.push_back(h);
+      m_restHingeAngles.push_back(rest);
+    }
   }
 }
 

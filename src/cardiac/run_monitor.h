@@ -76,8 +76,8 @@ struct StepSample {
   // descent (m), the vessels' fill.
   std::optional<CirculationSample> lumped;
   double contraction = 0, baseDescent = 0, vesselFill = 1;
-  // With a heart and pump figures: the wall's surface's largest hinge turn from rest (radians,
-  // pbd/surface_hinges.h): tens of degrees where the wall creases.
+  // With a heart and pump figures: the largest turn from rest (radians) of a hinge of the wall's
+  // surface that is smooth at rest (pbd/surface_hinges.h, run_monitor.cpp): a crease folds one.
   double surfaceTurn = 0;
   [[nodiscard]] double pressure(FlowRegion region) const { return flowStep.pressure[std::size_t(region)]; }
   void save(pbd::StateWriter& w) const;

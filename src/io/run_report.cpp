@@ -201,6 +201,17 @@ std::string runSummaryLine(const cardiac::Scenario& scenario, const RunTiming& t
                     c.lvPeak / cardiac::kPascalPerMmHg);
       s << "; " << pressures;
     }
+    // The 3D wall holds the lumped volume within 3% (CliLumped's bound) unless its contraction
+    // ran out (docs/scenarios.md, circulation.radial_shortening): then its figures are not the
+    // lumped heart's, and the line says so rather than let them pass as one heart's.
+    if (const double miss = run.circulation->cavityVolumeErrorMax(); miss > 0.03) {
+      char warning[200];
+      std::snprintf(warning, sizeof warning,
+                    "; warning: the 3D wall missed the lumped volume by up to %.0f%% (its contraction reached its "
+                    "limit), so its EF and volumes are not the lumped heart's",
+                    100 * miss);
+      s << warning;
+    }
   }
   if (run.blood)
     s << "; " << run.bloodFinal.particles << " blood particles, " << run.bloodLost << " lost, " << run.bloodInsideWall

@@ -51,6 +51,20 @@ TEST(CliLumped, BadPhysiologicalInputNamesTheKeyAndTheAcceptedRange) {
 
 // Two beats at 72 bpm: the figures are those of the second, the first complete beat after the
 // first (docs/validation.md has the 10 s figures). The ranges are issue 13's for `normal`.
+TEST(CliLumped, AWallThatCannotReachTheLumpedVolumeIsNamedInTheSummaryLine) {
+  // Mitral regurgitation ejects 74%: with the epicardium moving in by 30% of its radius the
+  // endocardium runs out of room before the lumped end-systolic volume (docs/scenarios.md).
+  const auto dir = scratchDir("lumped_wall_limit");
+  const CliResult limited =
+      runHeartsim("run mitral-regurgitation --duration 1.5 --threads 1 --set circulation.radial_shortening=0.3 --out a", dir);
+  ASSERT_EQ(limited.exitCode, 0) << limited.err;
+  EXPECT_NE(limited.err.find("; warning: the 3D wall missed the lumped volume by up to "), std::string::npos)
+      << limited.err;
+  const CliResult held = runHeartsim("run mitral-regurgitation --duration 1.5 --threads 1 --out b", dir);
+  ASSERT_EQ(held.exitCode, 0) << held.err;
+  EXPECT_EQ(held.err.find("warning"), std::string::npos) << held.err;
+}
+
 TEST(CliLumped, NormalLumpedGivesAHeartsPressuresAndItsPlots) {
   const auto dir = scratchDir("lumped_normal");
   const CliResult r = runHeartsim("run normal --duration 1.8 --threads 2 --json --out out", dir);
@@ -87,6 +101,12 @@ TEST(CliLumped, NormalLumpedGivesAHeartsPressuresAndItsPlots) {
   in("vessel_fill_min", 0.95, 1);
   EXPECT_EQ(j.at("blood").at("lost").get<int>(), 0);
   EXPECT_EQ(j.at("blood").at("inside_wall").get<int>(), 0);
+  // The shape held (docs/reliability.md, "The shape held"): no tet inverted or 60% off its
+  // volume, and no crease (no hinge of the smooth surface turned by 45 degrees).
+  const auto& tissue = j.at("tissue");
+  EXPECT_EQ(tissue.at("inverted_tets").get<int>(), 0);
+  EXPECT_LT(tissue.at("worst_tet_volume_error").get<double>(), 0.6);
+  EXPECT_LT(tissue.at("surface_turn_max_deg").get<double>(), 45);
   for (const char* png : {"pv_loop.png", "wiggers.png"}) {
     const auto path = dir / "out" / png;
     EXPECT_TRUE(std::filesystem::exists(path)) << png;
