@@ -125,9 +125,9 @@ RecordedBeat::RecordedBeat(const LvModel& model, const PatientWall& wall, const 
     : m_model(&model), m_period(period), m_firstParticle(firstParticle) {
   checkFrames(frames, period);
   std::vector<std::vector<Vec3d>> placed(frames.size());
+  const double cube = std::pow(wall.frame.metresPerUnit, 3);  // file volume units -> m^3
   for (std::size_t f = 0; f < frames.size(); ++f) {
     for (const Vec3& v : frames[f].vertices) placed[f].push_back(wall.frame.toHeart(v.cast<double>()));
-    const double cube = std::pow(wall.frame.metresPerUnit, 3);
     m_frameVolume.push_back(std::abs(pbd::cappedSignedVolume(frames[f].vertices, frames[f].triangles)) * cube);
   }
   m_offset.resize(frames.size());
