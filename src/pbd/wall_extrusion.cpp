@@ -8,17 +8,31 @@
 
 namespace hs::pbd {
 
-std::array<Tet, 3> splitPrism(const Triangle& bottom, Index layerOffset) {
-  // Rotate (keeping the winding) so that v0 has the smallest id; its two sides are cut by the
-  // diagonals v0-v1' and v0-v2', the third side by the diagonal through min(v1, v2).
-  Triangle t = bottom;
-  while (!(t[0] < t[1] && t[0] < t[2])) t = {t[1], t[2], t[0]};
-  const Index v0 = t[0], v1 = t[1], v2 = t[2];
-  const Index u0 = v0 + layerOffset, u1 = v1 + layerOffset, u2 = v2 + layerOffset;
+std::array<Tet, 3> splitPrism(const Triangle& bottom, const Triangle& top) {
+  // The cut starts from the prism's smallest id; when it lies on the top, the prism is read
+  // upside down with its winding reversed, which keeps it positive.
+  const Index least = std::min({bottom[0], bottom[1], bottom[2], top[0], top[1], top[2]});
+  const bool upsideDown = least == top[0] || least == top[1] || least == top[2];
+  Triangle b = upsideDown ? Triangle{top[0], top[2], top[1]} : bottom;
+  Triangle u = upsideDown ? Triangle{bottom[0], bottom[2], bottom[1]} : top;
+  // Rotate both (keeping the winding) so that v0 is the smallest; its two sides are cut by the
+  // diagonals v0-u1 and v0-u2, the third side (v1 v2 u2 u1) by the diagonal through its own
+  // smallest id.
+  while (b[0] != least) {
+    b = {b[1], b[2], b[0]};
+    u = {u[1], u[2], u[0]};
+  }
+  const Index v0 = b[0], v1 = b[1], v2 = b[2];
+  const Index u0 = u[0], u1 = u[1], u2 = u[2];
   // Orientation checked on the unit prism (v0, v1, v2) = (0,0,0), (1,0,0), (0,1,0), lifted by
   // z = 1: each has 6V = 1 (tests/pbd/test_wall_extrusion.cpp).
-  if (v1 < v2) return {{{v0, u1, u2, u0}, {v0, v1, v2, u2}, {v0, v1, u2, u1}}};
+  const Index sideLeast = std::min({v1, v2, u1, u2});
+  if (sideLeast == v1 || sideLeast == u2) return {{{v0, u1, u2, u0}, {v0, v1, v2, u2}, {v0, v1, u2, u1}}};
   return {{{v0, u1, u2, u0}, {v0, v1, v2, u1}, {v0, u1, v2, u2}}};
+}
+
+std::array<Tet, 3> splitPrism(const Triangle& bottom, Index layerOffset) {
+  return splitPrism(bottom, {bottom[0] + layerOffset, bottom[1] + layerOffset, bottom[2] + layerOffset});
 }
 
 namespace {

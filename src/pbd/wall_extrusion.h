@@ -61,6 +61,10 @@ std::vector<Vec3d> offsetDirections(const std::vector<Vec3>& vertices, const std
 // (b - a) x (c - a) pointing toward the primed layer, positively oriented, cut by the
 // smallest-id rule.
 std::array<Tet, 3> splitPrism(const Triangle& bottom, Index layerOffset);
+// The same cut for any ids: the prism (bottom) below (top), top[k] over bottom[k], with
+// (b - a) x (c - a) of the bottom pointing toward the top. Conforms with every other prism cut
+// by this rule over the same ids, whichever of its triangles holds the smallest id.
+std::array<Tet, 3> splitPrism(const Triangle& bottom, const Triangle& top);
 
 // Thickness per surface vertex from the distance along each direction to another surface (an
 // epicardium around an endocardium): the first hit of the ray x_i + t d_i, t > 0; where the

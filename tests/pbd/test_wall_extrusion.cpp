@@ -42,6 +42,53 @@ TEST(SplitPrism, EveryIdOrderGivesThreePositiveTetsFillingThePrism) {
   } while (std::next_permutation(ids.begin(), ids.end()));
 }
 
+TEST(SplitPrism, AnyIdsOnEitherTriangleGiveThreePositiveTetsFillingThePrism) {
+  // All 720 ways of numbering the unit prism's six corners, the smallest id on the bottom or
+  // the top: three positive tets that fill it.
+  const std::array<Vec3, 6> corner = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),
+                                      Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(0, 1, 1)};
+  std::array<Index, 6> ids = {0, 1, 2, 3, 4, 5};
+  int prisms = 0;
+  do {
+    std::vector<Vec3> x(6);
+    for (int k = 0; k < 6; ++k) x[ids[k]] = corner[k];
+    double total = 0;
+    for (const Tet& t : splitPrism({ids[0], ids[1], ids[2]}, {ids[3], ids[4], ids[5]})) {
+      EXPECT_NEAR(sixVolume(x, t), 1.0, 1e-6);
+      total += sixVolume(x, t);
+    }
+    EXPECT_NEAR(total / 6.0, 0.5, 1e-6);
+    ++prisms;
+  } while (std::next_permutation(ids.begin(), ids.end()));
+  EXPECT_EQ(prisms, 720);
+}
+
+TEST(SplitPrism, WithALayerOffsetItIsTheGeneralCut) {
+  for (const Triangle& bottom : {Triangle{0, 1, 2}, Triangle{2, 0, 1}, Triangle{5, 3, 9}, Triangle{7, 8, 4}}) {
+    const auto offset = splitPrism(bottom, 10);
+    const auto general = splitPrism(bottom, {bottom[0] + 10, bottom[1] + 10, bottom[2] + 10});
+    EXPECT_EQ(offset, general);
+  }
+}
+
+TEST(SplitPrism, TwoPrismsSharingASideCutItTheSameWayForAnyIds) {
+  // Two prisms side by side over the quad (1 2 | 1' 2'): random ids, the smallest anywhere.
+  // Conforming means the shared side's two triangles are each used by one tet of each prism.
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 500; ++trial) {
+    std::array<Index, 8> ids = {0, 1, 2, 3, 4, 5, 6, 7};
+    std::shuffle(ids.begin(), ids.end(), rng);
+    // Bottom corners a, b, c, d (b-c shared); tops a', b', c', d'.
+    const Index a = ids[0], b = ids[1], c = ids[2], d = ids[3], a1 = ids[4], b1 = ids[5], c1 = ids[6], d1 = ids[7];
+    std::vector<Tet> tets;
+    for (const Tet& t : splitPrism({a, b, c}, {a1, b1, c1})) tets.push_back(t);
+    for (const Tet& t : splitPrism({c, b, d}, {c1, b1, d1})) tets.push_back(t);
+    // The two prisms' shared side is interior: only their outer sides remain on the boundary
+    // (2 + 2 end triangles and 2 x 2 quads of two triangles each).
+    EXPECT_EQ(boundaryFaces(tets).size(), 12u) << "trial " << trial;
+  }
+}
+
 TEST(ExtrudeWall, ClosedSphereShellConformsAndHasTheShellVolume) {
   const auto sphere = makeSphere(3, 1.0);
   ExtrusionSettings settings;
