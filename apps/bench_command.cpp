@@ -192,6 +192,8 @@ std::vector<BenchCase> allCases() {
       heartCase("normal"),
       heartCase("irregular"),
       heartCase("inconsistent"),
+      heartCase("patient-biv-me"),
+      heartCase("idealized-lv"),
       damBreakCase("pbf-dam-break-1k", 10, 20, 5),
       damBreakCase("pbf-dam-break-10k", 25, 40, 10),
       damBreakCase("pbf-dam-break-100k", 50, 80, 25),

@@ -156,7 +156,7 @@ std::vector<Vec3> bloodStartPositions(const Scenario& scenario, const LvModel* m
   // Count the sites before making any: a tiny spacing must fail here, not in the allocator.
   double sites = 1;
   if (b.start != BloodSettings::Start::Block) {  // cavity and vessel bounding boxes, an upper bound
-    const LvGeometryParams& g = scenario.geometry;
+    const LvGeometryParams& g = model ? model->params : scenario.geometry;  // a patient's are measured
     const double a = 2 * double(g.endoRadius) / double(b.spacing);
     const double r = 2 * double(g.mitralRadius) / double(b.spacing);
     sites = a * a * double(g.endoLongAxis) / double(b.spacing) +

@@ -4,10 +4,19 @@
 #include <cmath>
 #include <numbers>
 
+#include "pbd/surface_inside.h"
+
 namespace hs::cardiac {
 
 FlowRegion FlowPath::classify(const Vec3& x, Real lumenSlack, Real endSlack) const {
   if (!x.allFinite()) return FlowRegion::Outside;
+  if (cavity) {
+    if (x.y() >= mitral.centre.y() && mitral.radial(x) < mitral.radius + lumenSlack && x.y() <= inflowTop + endSlack)
+      return FlowRegion::InflowVessel;
+    if (x.y() >= aortic.centre.y() && aortic.radial(x) < aortic.radius + lumenSlack && x.y() <= outflowTop + endSlack)
+      return FlowRegion::OutflowVessel;
+    return cavity->contains(x) ? FlowRegion::Ventricle : FlowRegion::Outside;
+  }
   // The valve planes are the regions' borders, as for the flows (flow_meter.h).
   if (x.y() >= mitral.centre.y()) {
     if (mitral.radial(x) < mitral.radius + lumenSlack && x.y() <= inflowTop + endSlack) return FlowRegion::InflowVessel;

@@ -3,9 +3,14 @@
 // ventricle -> aortic orifice -> outflow vessel. Part of the LV model (LvModel::flowPath),
 // found once on its rest shape; the one place that says which region a point is in.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "pbd/types.h"
+
+namespace hs::pbd {
+class SurfaceInside;
+}
 
 namespace hs::cardiac {
 
@@ -38,12 +43,16 @@ struct FlowPath {
   Vec3 apexAxisOrigin = Vec3::Zero();  // the endocardial spheroid's centre on the base plane
   Real midWallRadius = 0, midWallLongAxis = 0;
   Real plateMid = 0;                   // half the base plate's thickness
+  // A patient's ventricle (patient_vessels.h): inside its mid-wall surface closed over the
+  // annuli, instead of the spheroid; each vessel begins at its own orifice's plane. Null for the
+  // procedural heart.
+  std::shared_ptr<const pbd::SurfaceInside> cavity;
 
   // Which part of the path x is in, however the wall has moved. A vessel: past its valve's
   // plane inside its lumen, within `lumenSlack` of the lumen wall and `endSlack` beyond its far
   // end (the blood's radius and spacing: particles touching the wall count as inside). The
   // ventricle: inside the mid-wall spheroid, continued as a cylinder up to the base plate's
-  // middle. Anything else (a particle that went through the wall) is Outside; never Parked.
+  // middle (or inside a patient's `cavity`). Anything else (a particle that went through the wall) is Outside; never Parked.
   [[nodiscard]] FlowRegion classify(const Vec3& x, Real lumenSlack, Real endSlack) const;
   // The path with the base plate (and both orifices in it) moved `descent` toward the apex,
   // as the lumped circulation's wall moves it (volume_driven_wall.h); the vessels' far ends

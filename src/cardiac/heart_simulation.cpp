@@ -11,6 +11,7 @@
 
 #include "cardiac/heart_activation.h"
 #include "cardiac/patient_lv_model.h"
+#include "cardiac/patient_vessels.h"
 #include "pbd/soft_body.h"
 
 namespace hs::cardiac {
@@ -72,6 +73,7 @@ void HeartSimulation::buildHeart() {
   if (m_scenario.patient.kind == ModelKind::Mesh) {
     patientWall.emplace(buildPatientShell(m_scenario.patient, m_scenario.geometry.wallThickness));
     m_model.emplace(lvModelFromPatientWall(*patientWall));
+    if (m_scenario.blood.enabled) attachVessels();
   } else {
     m_model.emplace(buildLvModel(m_scenario.geometry));
   }
@@ -93,6 +95,21 @@ void HeartSimulation::buildHeart() {
   for (const pbd::Tet& t : model.mesh.tets) {
     const auto& x = model.mesh.vertices;
     m_restVolume.push_back(pbd::signedTetVolume(x[t[0]], x[t[1]], x[t[2]], x[t[3]]));
+  }
+}
+
+// A patient's heart with blood gets the vessels it enters and leaves by (patient_vessels.h).
+void HeartSimulation::attachVessels() {
+  const LvGeometryParams& g = m_scenario.geometry;
+  PatientVesselSizes sizes;
+  sizes.inflowLength = g.inflowVesselLength;
+  sizes.outflowLength = g.outflowVesselLength;
+  sizes.wallThickness = g.vesselWallThickness;
+  sizes.edge = Real(wallResolution(m_scenario.patient.resolution).edgeLength);
+  try {
+    attachPatientVessels(*m_model, sizes);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(patientModelFile(m_scenario.patient) + ": " + e.what());
   }
 }
 

@@ -111,6 +111,7 @@ class HeartSimulation {
  private:
   // Construction.
   void buildHeart();
+  void attachVessels();
   void buildLumpedCirculation();
   void buildRecordedBeat(const PatientWall& wall);
   void buildBlood();

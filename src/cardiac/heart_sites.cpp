@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 
 #include "cardiac/flow_path.h"
 #include "pbd/cell_grid.h"
+#include "pbd/closest_point.h"
 #include "pbd/sph_kernels.h"
+#include "pbd/surface_inside.h"
 
 namespace hs::cardiac {
 namespace {
@@ -17,6 +21,63 @@ std::vector<Vec3> lumenColumn(const Orifice& lumen, Real first, Real top, Real r
   for (Real y = first; y <= top - r + Real(1e-6) * d; y = first + Real(++layer) * d)
     for (const Vec3& site : lumenDiscSites(lumen, y, lumen.radius - r, d, layer % 2 == 1)) out.push_back(site);
   return out;
+}
+
+// A patient's heart (FlowPath::cavity set, patient_vessels.h). Its cavity is no spheroid: the
+// sites are a cubic lattice a spacing apart inside the endocardium closed over both annuli, and
+// each vessel's column starts a particle radius above its own orifice's plane. Every site keeps a
+// particle radius from the wall's surface (brute force over its faces, boxes first: once, at the
+// start).
+bool farFromWall(const LvModel& model, const Vec3& p, Real r) {
+  const std::vector<Vec3>& x = model.mesh.vertices;
+  for (const pbd::Triangle& t : model.surface) {
+    const Vec3 lo = x[t[0]].cwiseMin(x[t[1]]).cwiseMin(x[t[2]]) - Vec3::Constant(r);
+    const Vec3 hi = x[t[0]].cwiseMax(x[t[1]]).cwiseMax(x[t[2]]) + Vec3::Constant(r);
+    if ((p.array() < lo.array()).any() || (p.array() > hi.array()).any()) continue;
+    // A site exactly a radius away passes, whatever the rounding: 0.1% of slack.
+    const Real reach = Real(0.999) * r;
+    if ((pbd::closestPointOnTriangleOf(p, x[t[0]], x[t[1]], x[t[2]]) - p).squaredNorm() < reach * reach) return false;
+  }
+  return true;
+}
+
+Real vesselStart(const Orifice& orifice, Real r) { return orifice.centre.y() + r; }
+
+std::vector<Vec3> patientCavitySites(const Scenario& scenario, const LvModel& model) {
+  const Real d = scenario.blood.spacing, r = scenario.blood.radius;
+  std::vector<Vec3> x = model.mesh.vertices;
+  std::vector<pbd::Triangle> closed = model.cavitySurface;
+  for (const std::vector<Index>* ring : {&model.mitralRing, &model.aorticRing}) {
+    Vec3 centroid = Vec3::Zero();
+    for (Index v : *ring) centroid += x[v];
+    x.push_back(centroid / Real(ring->size()));
+    const auto c = Index(x.size() - 1);
+    for (std::size_t k = 0; k < ring->size(); ++k) closed.push_back({c, (*ring)[k], (*ring)[(k + 1) % ring->size()]});
+  }
+  Vec3 lo = Vec3::Constant(std::numeric_limits<Real>::max()), hi = -lo;
+  for (const pbd::Triangle& t : closed)
+    for (Index v : t) {
+      lo = lo.cwiseMin(x[v]);
+      hi = hi.cwiseMax(x[v]);
+    }
+  const pbd::SurfaceInside cavity(x, closed, d);
+  const FlowPath& path = model.flowPath;
+  // Below the vessels' columns: a spacing under a column's first layer, within its lumen.
+  auto underAColumn = [&](const Vec3& p) {
+    for (const Orifice* o : {&path.mitral, &path.aortic})
+      if (p.y() > vesselStart(*o, r) - d && o->radial(p) < o->radius) return false;
+    return true;
+  };
+  std::vector<Vec3> sites;
+  const Vec3 extent = (hi - lo) / d;
+  const int nx = int(extent.x()) + 1, ny = int(extent.y()) + 1, nz = int(extent.z()) + 1;
+  for (int j = ny - 1; j >= 0; --j)  // from the base down, as the spheroid's layers
+    for (int i = 0; i < nx; ++i)
+      for (int k = 0; k < nz; ++k) {
+        const Vec3 p = lo + d * Vec3(Real(i) + Real(0.5), Real(j) + Real(0.5), Real(k) + Real(0.5));
+        if (cavity.contains(p) && underAColumn(p) && farFromWall(model, p, r)) sites.push_back(p);
+      }
+  return sites;
 }
 
 }  // namespace
@@ -36,15 +97,34 @@ std::vector<Vec3> cavitySites(const Scenario& scenario) {
   return x;
 }
 
+std::vector<Vec3> cavitySites(const Scenario& scenario, const LvModel& model) {
+  return model.flowPath.cavity ? patientCavitySites(scenario, model) : cavitySites(scenario);
+}
+
 VesselSites vesselSites(const Scenario& scenario, const LvModel& model) {
   const Real d = scenario.blood.spacing, r = scenario.blood.radius;
   const FlowPath& path = model.flowPath;
   VesselSites sites;
   sites.lowest = -r + d;  // a spacing above the cavity's top layer
   if (!(d > 0)) return sites;
-  sites.inflow = lumenColumn(path.mitral, sites.lowest, path.inflowTop, r, d);
-  sites.outflow = lumenColumn(path.aortic, sites.lowest, path.outflowTop, r, d);
-  std::vector<Vec3> full = cavitySites(scenario);
+  if (path.cavity) {
+    // The vessel's lumen is the polygon of its ring's n vertices on the orifice's circle: its
+    // sites reach to the polygon's inscribed circle, R cos(pi / n), less a particle radius.
+    auto inscribed = [](Orifice o, std::size_t n) {
+      o.radius *= std::cos(std::numbers::pi_v<Real> / Real(std::max<std::size_t>(n, 3)));
+      return o;
+    };
+    const Real inflowStart = vesselStart(path.mitral, r), outflowStart = vesselStart(path.aortic, r);
+    sites.lowest = std::min(inflowStart, outflowStart);
+    sites.inflow = lumenColumn(inscribed(path.mitral, model.mitralRing.size()), inflowStart, path.inflowTop, r, d);
+    sites.outflow = lumenColumn(inscribed(path.aortic, model.aorticRing.size()), outflowStart, path.outflowTop, r, d);
+    for (std::vector<Vec3>* column : {&sites.inflow, &sites.outflow})
+      std::erase_if(*column, [&](const Vec3& p) { return !farFromWall(model, p, r); });
+  } else {
+    sites.inflow = lumenColumn(path.mitral, sites.lowest, path.inflowTop, r, d);
+    sites.outflow = lumenColumn(path.aortic, sites.lowest, path.outflowTop, r, d);
+  }
+  std::vector<Vec3> full = cavitySites(scenario, model);
   full.insert(full.end(), sites.inflow.begin(), sites.inflow.end());
   full.insert(full.end(), sites.outflow.begin(), sites.outflow.end());
   sites.inflowFull = bloodColour(sites.inflow, full, d, scenario.blood.supportRadius);
@@ -69,7 +149,7 @@ void VesselSites::drop(const std::function<bool(const Vec3&)>& dropped) {
 }
 
 std::vector<Vec3> heartSites(const Scenario& scenario, const LvModel& model) {
-  std::vector<Vec3> x = cavitySites(scenario);
+  std::vector<Vec3> x = cavitySites(scenario, model);
   const VesselSites vessels = vesselSites(scenario, model);
   x.insert(x.end(), vessels.inflow.begin(), vessels.inflow.end());
   x.insert(x.end(), vessels.outflow.begin(), vessels.outflow.end());

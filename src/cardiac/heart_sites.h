@@ -17,8 +17,13 @@ namespace hs::cardiac {
 // The cavity's half spheroid (the endocardium less a particle radius), in layers from a radius
 // under the base plane down to the apex.
 std::vector<Vec3> cavitySites(const Scenario& scenario);
+// The cavity's sites of this model: the spheroid's above, or a patient's (FlowPath::cavity): a
+// cubic lattice a spacing apart inside its endocardium closed over the annuli, a particle radius
+// from the wall and below the vessels' columns.
+std::vector<Vec3> cavitySites(const Scenario& scenario, const LvModel& model);
 
-// Each vessel's lumen, from a spacing above the cavity's top layer to a particle radius under
+// Each vessel's lumen, from a spacing above the cavity's top layer (a patient's: a particle
+// radius above its orifice's plane, sites a radius from the wall) to a particle radius under
 // the vessel's far end, with the blood colour (bloodColour) each site has when the heart is
 // full at rest: blood on every site of the cavity and of both vessels.
 struct VesselSites {

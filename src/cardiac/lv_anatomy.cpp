@@ -36,8 +36,10 @@ AnatomyFigures measureAnatomy(const LvModel& model) {
   f.mitralArea = mitral.area.norm();
   f.aorticArea = aortic.area.norm();
 
-  // The root: the outflow vessel's lumen side (even ids, lv_model.h) about the aortic ring's axis.
-  const Vec3d axis = aortic.area.norm() > 0 ? Vec3d(aortic.area.normalized()) : Vec3d::UnitY();
+  // The root: the outflow vessel's lumen side (even ids, lv_model.h) about the vessel's axis,
+  // which rises along the flow path's aortic direction from the ring's centroid (a patient's
+  // ring may be tilted against it, patient_vessels.h).
+  const Vec3d axis = model.flowPath.aortic.forward.cast<double>().normalized();
   double rootRadius = -1;
   for (std::size_t v = 0; v < model.mesh.vertices.size(); v += 2) {
     if (model.region[v] != Region::OutflowVessel) continue;

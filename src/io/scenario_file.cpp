@@ -3,6 +3,7 @@
 #include "io/toml_text.h"
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <map>
 #include <fstream>
@@ -270,9 +271,33 @@ void resolveMeshModel(ParseState& st) {
   if (!(t >= 0.002 && t <= 0.03))
     fail(st.at("model.wall_thickness") + ": model.wall_thickness: must be within [0.002, 0.03] m for a patient's "
                                          "wall (model.kind = \"mesh\"), got " + detail::formatNumber(t));
-  if (st.scenario.blood.enabled)
-    fail(st.at("blood.enabled") + ": blood.enabled: expected false with model.kind = \"mesh\" (a patient's heart "
-                                  "beats without blood for now), got true");
+  // A patient's blood starts in its cavity and vessels, full at rest (heart_sites.h): the other
+  // starts are laid out for the procedural heart. Unset, the start is that one.
+  cardiac::BloodSettings& blood = st.scenario.blood;
+  if (blood.enabled && st.keyOrigin.find("blood.start") == st.keyOrigin.end())
+    blood.start = cardiac::BloodSettings::Start::Heart;
+  if (blood.enabled && blood.start != cardiac::BloodSettings::Start::Heart) {
+    const char* starts[] = {"block", "chamber", "vessel", "heart"};
+    fail(st.at("blood.start") + ": blood.start: expected \"heart\" with model.kind = \"mesh\" (a patient's cavity "
+                                "and vessels filled at rest; the other starts are laid out for the procedural "
+                                "heart), got \"" + starts[int(blood.start)] + "\"");
+  }
+  // Blood enters and leaves a patient's ventricle by vessels on its annuli (patient_vessels.h),
+  // sized as a real heart's unless the scenario says (the procedural defaults are the thesis's).
+  const std::pair<const char*, Real*> vesselKeys[] = {
+      {"model.inflow_vessel_length", &st.scenario.geometry.inflowVesselLength},
+      {"model.outflow_vessel_length", &st.scenario.geometry.outflowVesselLength},
+      {"model.vessel_wall_thickness", &st.scenario.geometry.vesselWallThickness}};
+  for (const auto& [key, value] : vesselKeys) {
+    if (!blood.enabled) break;  // no blood, no vessels
+    const bool thickness = std::string_view(key) == "model.vessel_wall_thickness";
+    if (st.keyOrigin.find(key) == st.keyOrigin.end()) *value = Real(thickness ? 0.002 : 0.03);
+    const double v = double(*value), lo = thickness ? 0.0005 : 0.01, hi = thickness ? 0.005 : 0.1;
+    if (!(v >= lo && v <= hi))
+      fail(st.at(key) + ": " + key + ": must be within [" + detail::formatNumber(lo) + ", " +
+           detail::formatNumber(hi) + "] m for a patient's vessels (model.kind = \"mesh\"), got " +
+           detail::formatNumber(v));
+  }
   if (st.scenario.circulation.lumped)
     fail(st.at("circulation.lumped") + ": circulation.lumped: expected false with model.kind = \"mesh\" (a "
                                        "patient's heart beats with heartsim's own cycle for now), got true");
@@ -282,6 +307,25 @@ void resolveMeshModel(ParseState& st) {
   } catch (const std::invalid_argument& e) {
     fail(st.at(key) + std::string(": ") + key + ": " + e.what());
   }
+  // Where only the heart's scale matters (the pictures' colour scales, the viewer's thesis or
+  // human grouping, the blood's support radius against the cavity), the procedural sizes stand
+  // for the patient's: the endocardium's extent, the longest as the long axis and half the
+  // middle one as the radius. The model itself measures its own (patient_lv_model.h).
+  if (!p.endocardiumSurface.vertices.empty()) {
+    pbd::Vec3 lo = p.endocardiumSurface.vertices.front(), hi = lo;
+    for (const pbd::Vec3& v : p.endocardiumSurface.vertices) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+    std::array<double, 3> extent{};
+    for (int a = 0; a < 3; ++a) extent[std::size_t(a)] = double(hi[a] - lo[a]) * cardiac::metresPer(p.units);
+    std::sort(extent.begin(), extent.end());
+    cardiac::LvGeometryParams& g = st.scenario.geometry;
+    g.endoLongAxis = Real(extent[2]);
+    g.endoRadius = Real(0.5 * extent[1]);
+    g.baseThickness = g.wallThickness;
+  }
+  if (st.scenario.blood.enabled) validateBloodScale(st);  // again, against the patient's cavity
 }
 
 // [motion]: a recorded beat drives a patient's heart and sets its timing (the cycle's heart rate,

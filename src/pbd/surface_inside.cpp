@@ -89,6 +89,36 @@ SurfaceInside::SurfaceInside(std::vector<Vec3> vertices, std::vector<Triangle> t
   std::vector<Index> cursor(m_columnStart.begin(), m_columnStart.end() - 1);
   for (std::size_t t = 0; t < m_triangles.size(); ++t)
     forEachColumn(m_triangles[t], [&](std::size_t column) { m_items[cursor[column]++] = Index(t); });
+
+  // The cubes: crossed where a triangle's box reaches (closed boxes, so a surface on a cube's
+  // face crosses both cubes), the others answered at their centres.
+  Real maxY = m_vertices.front().y();
+  m_minY = maxY;
+  for (const Vec3& v : m_vertices) {
+    m_minY = std::min(m_minY, v.y());
+    maxY = std::max(maxY, v.y());
+  }
+  m_cubesY = std::size_t(std::floor((maxY - m_minY) / columnSize)) + 1;
+  std::vector<std::uint8_t> crossed(m_columnsX * m_columnsZ * m_cubesY, 0);
+  for (const Triangle& t : m_triangles) {
+    const Vec3& a = m_vertices[t[0]];
+    const Vec3& b = m_vertices[t[1]];
+    const Vec3& c = m_vertices[t[2]];
+    const std::size_t y0 = clampedColumn(std::min({a.y(), b.y(), c.y()}), m_minY, m_cubesY);
+    const std::size_t y1 = clampedColumn(std::max({a.y(), b.y(), c.y()}), m_minY, m_cubesY);
+    forEachColumn(t, [&](std::size_t column) {
+      for (std::size_t k = y0; k <= y1; ++k) crossed[column * m_cubesY + k] = 1;
+    });
+  }
+  m_cubes.resize(crossed.size());
+  for (std::size_t i = 0; i < m_columnsX; ++i)
+    for (std::size_t k = 0; k < m_columnsZ; ++k)
+      for (std::size_t j = 0; j < m_cubesY; ++j) {
+        const std::size_t cube = (i * m_columnsZ + k) * m_cubesY + j;
+        const Vec3 centre(m_minX + (Real(i) + Real(0.5)) * columnSize, m_minY + (Real(j) + Real(0.5)) * columnSize,
+                          m_minZ + (Real(k) + Real(0.5)) * columnSize);
+        m_cubes[cube] = crossed[cube] ? CubeState::Crossed : columnTest(centre) ? CubeState::Inside : CubeState::Outside;
+      }
 }
 
 bool SurfaceInside::columnOf(Real x, Real z, std::size_t& column) const {
@@ -101,6 +131,18 @@ bool SurfaceInside::columnOf(Real x, Real z, std::size_t& column) const {
 bool SurfaceInside::contains(const Vec3& p) const {
   std::size_t column = 0;
   if (!columnOf(p.x(), p.z(), column)) return false;  // beyond the surface's footprint (or not finite)
+  const Real layer = std::floor((p.y() - m_minY) / m_columnSize);
+  if (!(layer >= 0)) return false;  // below the surface (or not finite)
+  if (layer < Real(m_cubesY)) {
+    const CubeState state = m_cubes[column * m_cubesY + std::size_t(layer)];
+    if (state != CubeState::Crossed) return state == CubeState::Inside;
+  }
+  return columnTest(p);
+}
+
+bool SurfaceInside::columnTest(const Vec3& p) const {
+  std::size_t column = 0;
+  if (!columnOf(p.x(), p.z(), column)) return false;
   bool inside = false;
   for (Index k = m_columnStart[column]; k < m_columnStart[column + 1]; ++k) {
     const Triangle& t = m_triangles[m_items[k]];

@@ -8,6 +8,7 @@
 // of them, Pineda 1988), so a ray through an edge or a corner is counted once, not twice or
 // never. Triangles seen edge-on (zero projected area) never count: a ray along one meets its
 // neighbours instead. The answer for a point exactly on the surface is either.
+#include <cstdint>
 #include <vector>
 
 #include "pbd/tet_mesh.h"
@@ -22,7 +23,10 @@ bool crossesUpwardRay(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p
 bool insideClosedSurface(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles, const Vec3& p);
 
 // The same test over the triangles whose xz footprint meets the point's column: a grid of square
-// columns (`columnSize` wide) over the surface's xz box, built once for a fixed surface.
+// columns (`columnSize` wide) over the surface's xz box, built once for a fixed surface. Before
+// that, a grid of cubes of the same size over the surface's box answers for the cubes that no
+// triangle's box touches: no surface crosses them, so all their points share the answer of
+// their centre, found once. Exactly the brute force's answer either way.
 class SurfaceInside {
  public:
   SurfaceInside(std::vector<Vec3> vertices, std::vector<Triangle> triangles, Real columnSize);
@@ -32,6 +36,9 @@ class SurfaceInside {
 
  private:
   [[nodiscard]] bool columnOf(Real x, Real z, std::size_t& column) const;
+  [[nodiscard]] bool columnTest(const Vec3& p) const;
+
+  enum class CubeState : std::uint8_t { Outside, Inside, Crossed };
 
   std::vector<Vec3> m_vertices;
   std::vector<Triangle> m_triangles;
@@ -39,6 +46,9 @@ class SurfaceInside {
   std::size_t m_columnsX = 0, m_columnsZ = 0;
   std::vector<Index> m_columnStart;  // CSR: the triangles of column k are m_items[start[k], start[k+1])
   std::vector<Index> m_items;
+  Real m_minY = 0;
+  std::size_t m_cubesY = 0;
+  std::vector<CubeState> m_cubes;  // (column, layer) -> column * m_cubesY + layer
 };
 
 }  // namespace hs::pbd

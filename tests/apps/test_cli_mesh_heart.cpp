@@ -3,6 +3,9 @@
 // directory that is not the source tree.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
+
 #include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -38,10 +41,14 @@ TEST(CliMeshHeart, IdealizedLvRunsFromAnyDirectory) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["tissue"]["inverted_tets"], 0);
   EXPECT_NEAR(j["cavity"]["volume_rest_m3"].get<double>() * 1e6, 167.5, 1.675);
-  // A patient's wall has annuli but no vessels: no root to measure, and it says so.
+  // With blood the annuli carry vessels (patient_vessels.h): the root is the outflow vessel's
+  // lumen, a circle of the aortic orifice's area (the flat ring's polygon reaches a little wider).
   EXPECT_GT(j["model"]["mitral_area_cm2"].get<double>(), 1);
   EXPECT_GT(j["model"]["long_axis_mm"].get<double>(), 50);
-  EXPECT_TRUE(j["model"]["aortic_root_diameter_mm"].is_null());
+  const double orificeMm = 20 * std::sqrt(j["model"]["aortic_area_cm2"].get<double>() / std::numbers::pi);
+  EXPECT_NEAR(j["model"]["aortic_root_diameter_mm"].get<double>(), orificeMm, 1.0);
+  EXPECT_EQ(j["blood"]["lost"], 0);
+  EXPECT_EQ(j["blood"]["inside_wall"], 0);
 }
 
 TEST(CliMeshHeart, ARecordedBeatDrivesTheWallAndItsReportComparesTheVolumes) {
@@ -78,6 +85,32 @@ TEST(CliMeshHeart, ARecordedBeatDrivesTheWallAndItsReportComparesTheVolumes) {
   const CliResult plain = runHeartsim("run idealized-lv --duration 0.01 --threads 1 --json --out plain", dir);
   ASSERT_EQ(plain.exitCode, 0) << plain.err;
   EXPECT_TRUE(nlohmann::json::parse(plain.out)["motion"].is_null());
+}
+
+TEST(CliMeshHeart, ARecordedBeatPumpsBloodThroughItsVessels) {
+  // The same recording with blood: the wall follows it, the blood leaves through the aortic
+  // vessel in systole and comes back through the mitral one, none lost or left in the wall.
+  const auto dir = scratchDir("mesh_heart_motion_blood");
+  const std::string endo = std::string(HS_TEST_DATA_DIR) + "/meshes/bivme_patient1/patient1_LV_ENDOCARDIAL_000.obj";
+  const auto read = io::parseScenario("[model]\nkind = \"mesh\"\nendocardium = \"" + endo + "\"\n", "x.toml");
+  writeFrames(dir / "beat", scaledFrames(read.patient.endocardiumSurface, 25, 0.3, 0.36));
+  std::ofstream(dir / "recorded.toml")
+      << "[simulation]\ndt = 0.001\niterations = 10\n[model]\nkind = \"mesh\"\nendocardium = \"beat/frame_000.obj\"\n"
+         "[motion]\nframes = \"beat/frame_{frame:03d}.obj\"\ncount = 25\nperiod = 0.8\n"
+         "[blood]\nenabled = true\nparticles = 4200\nradius = 0.0018\nspacing = 0.0036\nsupport_radius = 0.0072\n"
+         "rest_density = 1060.0\nviscosity = 0.0035\nxsph = 0.3\nwall_density = true\n"
+         "[circulation]\nvalves = \"timing\"\nloop = true\nwall_slip = true\n";
+  const CliResult r = runHeartsim("run recorded.toml --duration 1.7 --threads 2 --json --out out", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["blood"]["particles"], 4200);
+  EXPECT_EQ(j["blood"]["lost"], 0);
+  EXPECT_EQ(j["blood"]["inside_wall"], 0);
+  EXPECT_LT(j["motion"]["volume_error_max"].get<double>(), 0.02);
+  EXPECT_NEAR(j["heart"]["ejection_fraction"].get<double>(), 0.3, 0.01);
+  const double stroke = j["heart"]["stroke_volume_ml"].get<double>();
+  EXPECT_GT(j["heart"]["aortic_net_forward_ml"].get<double>(), 0.5 * stroke);
+  EXPECT_EQ(j["tissue"]["inverted_tets"], 0);
 }
 
 }  // namespace

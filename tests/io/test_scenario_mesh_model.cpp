@@ -62,7 +62,9 @@ TEST(ScenarioMeshModel, AMeshHeartNeedsExactlyOneMeshThatReads) {
   expectError("[model]\nkind = \"mesh\"\nvolume_mesh = \"lv.xyz\"\n",
               {"lesson.toml:3", "model.volume_mesh", "lv.xyz", "expected .obj"});
   expectError(meshModel("wall_thickness = 0.5\n"), {"lesson.toml:4", "model.wall_thickness", "[0.002, 0.03]"});
-  expectError(meshModel("[blood]\nenabled = true\n"), {"lesson.toml:5", "blood.enabled", "expected false"});
+  // Blood starts in a patient's cavity and vessels (tests/io/test_patient_blood.cpp), nowhere else.
+  expectError(meshModel("[blood]\nenabled = true\nstart = \"vessel\"\n"),
+              {"lesson.toml:6", "blood.start", "expected \"heart\"", "got \"vessel\""});
   const std::string node = kData + "/meshes/arostica2025_idealized_lv/ellipsoid_0.005.node";
   expectError("[model]\nkind = \"mesh\"\nvolume_mesh = \"" + node + "\"\n[model.markers]\nendocardium = 9\n",
               {"model.volume_mesh", "no surface group '9' for the endocardium; expected one of 1, 2, 3"});
