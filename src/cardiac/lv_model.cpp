@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -30,6 +31,10 @@ constexpr double kMaxLengthInRadii = 20.0;
 // The gap between the orifices and between each orifice and the rim, in units of the vessel
 // wall thickness: the outer walls must leave at least one wall thickness of plate between them.
 constexpr double kMinGapInWalls = 3.0;
+// The base plate is meshed at the gap's size where the gap is narrower than the elements, and
+// its planar Delaunay grows faster than linearly: 20,000 points take about 5 s, 300,000 would
+// take hours. The finest resolution of the default sizes needs about 5,300.
+constexpr double kMaxPlatePoints = 25000;
 
 std::string fmt(double v) {
   std::ostringstream os;
@@ -85,6 +90,18 @@ void validate(const LvGeometryParams& p) {
     fail("mitral_radius", "orifices do not fit in the base plate: need mitral_radius + aortic_radius + " +
                               fmt(1.5 * kMinGapInWalls) + " * vessel_wall_thickness < endo_radius (" +
                               fmt(p.endoRadius) + " m), got " + fmt(need));
+  }
+  // The plate's lattice: one point per sqrt(3)/2 h^2 of the disc, h the smaller of the element
+  // size and the gap (makeDims), counted before anything is meshed.
+  const double a = double(p.endoRadius);
+  const double gap = (2 * a - 2 * double(p.mitralRadius) - 2 * double(p.aorticRadius)) / 3;
+  const double plateH = std::min(kEdgePerRadius * a / double(p.resolution), gap);
+  const double points = std::numbers::pi * a * a / (0.8660254037844386 * plateH * plateH);
+  if (points > kMaxPlatePoints) {
+    fail("mitral_radius", "the base plate's gaps between the orifices and the rim (" + fmt(gap) +
+                              " m) would need about " + fmt(std::round(points)) + " mesh points, more than " +
+                              fmt(kMaxPlatePoints) + "; widen them (smaller model.mitral_radius or "
+                              "model.aortic_radius, or a larger model.endo_radius) or lower model.resolution");
   }
 }
 

@@ -379,5 +379,28 @@ TEST(LvModel, NeedleIsRefusedAtOnce) {
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
 }
 
+// Orifices that leave slivers of plate between them (a gap of 6.6 mm on a 2 m plate) would
+// mesh the plate at the gap's size: about 330,000 points, an hour's Delaunay. Refused before
+// meshing, naming the keys that widen the gaps; the finest resolution of the default sizes is
+// still built.
+TEST(LvModel, ABasePlateOfSliversIsRefusedAtOnce) {
+  LvGeometryParams p;
+  p.mitralRadius = 1.05f;
+  p.aorticRadius = 0.9401f;
+  p.vesselWallThickness = 0.002f;
+  try {
+    buildLvModel(p);
+    ADD_FAILURE() << "a plate of slivers was meshed";
+  } catch (const std::invalid_argument& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("model.mitral_radius: the base plate's gaps"), std::string::npos) << m;
+    EXPECT_NE(m.find("more than 25000"), std::string::npos) << m;
+    EXPECT_NE(m.find("model.aortic_radius"), std::string::npos) << m;
+  }
+  LvGeometryParams finest;
+  finest.resolution = 8;
+  EXPECT_NO_THROW(buildLvModel(finest));
+}
+
 }  // namespace
 }  // namespace hs::cardiac
