@@ -14,7 +14,7 @@ int crossing(const Orifice& orifice, const Vec3& x, const Vec3& p) {
   if (!forward && !backward) return 0;
   // Where the segment meets the plane: inside the disc?
   const Real t = a / (a - b);
-  if (orifice.radial(x + t * (p - x)) >= orifice.radius) return 0;
+  if (orifice.radial(x + t * (p - x)) >= orifice.gate()) return 0;
   return forward ? 1 : -1;
 }
 
@@ -38,7 +38,7 @@ struct ValveSample {
   std::size_t count[2] = {0, 0};
   void add(const Orifice& o, const Vec3& x, Real p, Real slab) {
     const Real side = o.side(x);
-    if (std::abs(side) > slab || o.radial(x) >= o.radius) return;
+    if (std::abs(side) > slab || o.radial(x) >= o.gate()) return;
     const int k = side >= Real(0) ? 1 : 0;
     sum[k] += double(p);
     ++count[k];
@@ -60,8 +60,8 @@ void FlowMeter::measure(const pbd::Particles& particles, Index first, const std:
     if (!particles.active(i)) continue;
     const Vec3& x0 = m_start[i - first];
     const Vec3& x1 = particles.position[i];
-    const int m = crossing(m_path.mitral, x0, x1);
-    const int a = crossing(m_path.aortic, x0, x1);
+    const int m = crossing(m_path.mitralValve(), x0, x1);
+    const int a = crossing(m_path.aorticValve(), x0, x1);
     s.mitralForward += m > 0, s.mitralBackward += m < 0;
     s.aorticForward += a > 0, s.aorticBackward += a < 0;
     if (a > 0) s.aorticJet = std::max(s.aorticJet, double(particles.velocity[i].norm()));
@@ -69,8 +69,8 @@ void FlowMeter::measure(const pbd::Particles& particles, Index first, const std:
     const FlowRegion r = m_path.classify(x1, m_radius, m_spacing);
     ++s.count[std::size_t(r)];
     pressureSum[std::size_t(r)] += double(p);
-    mitral.add(m_path.mitral, x1, p, slab);
-    aortic.add(m_path.aortic, x1, p, slab);
+    mitral.add(m_path.mitralValve(), x1, p, slab);
+    aortic.add(m_path.aorticValve(), x1, p, slab);
   }
   for (std::size_t r = 0; r < kFlowRegionCount; ++r)
     s.pressure[r] = s.count[r] > 0 ? pressureSum[r] / double(s.count[r]) : 0.0;

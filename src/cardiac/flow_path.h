@@ -4,6 +4,7 @@
 // found once on its rest shape; the one place that says which region a point is in.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "pbd/types.h"
@@ -25,6 +26,11 @@ struct Orifice {
   Vec3 centre = Vec3::Zero();
   Vec3 forward = Vec3::UnitY();
   Real radius = 0;
+  // The disc the closed valve walls off and the flow meter counts through: the lumen's, unless
+  // the ring reaches wider (a patient's oval ring: the largest distance of its vertices from
+  // the axis, patient_vessels.h), so that no blood passes the valve beside the disc.
+  Real gateRadius = 0;
+  [[nodiscard]] Real gate() const { return gateRadius > radius ? gateRadius : radius; }
   // Signed distance along `forward`: < 0 upstream, >= 0 downstream.
   [[nodiscard]] Real side(const Vec3& x) const { return forward.dot(x - centre); }
   // Distance from the disc's axis.
@@ -47,6 +53,11 @@ struct FlowPath {
   // annuli, instead of the spheroid; each vessel begins at its own orifice's plane. Null for the
   // procedural heart.
   std::shared_ptr<const pbd::SurfaceInside> cavity;
+  // The valves' discs where they differ from the orifices: a patient's ring is tilted against
+  // the vertical vessel above it, and its valve lies in the ring's own plane (patient_vessels.h).
+  std::optional<Orifice> mitralValveDisc, aorticValveDisc;
+  [[nodiscard]] const Orifice& mitralValve() const { return mitralValveDisc ? *mitralValveDisc : mitral; }
+  [[nodiscard]] const Orifice& aorticValve() const { return aorticValveDisc ? *aorticValveDisc : aortic; }
 
   // Which part of the path x is in, however the wall has moved. A vessel: past its valve's
   // plane inside its lumen, within `lumenSlack` of the lumen wall and `endSlack` beyond its far
@@ -61,6 +72,8 @@ struct FlowPath {
     FlowPath moved = *this;
     moved.mitral.centre.y() -= descent;
     moved.aortic.centre.y() -= descent;
+    for (std::optional<Orifice>* disc : {&moved.mitralValveDisc, &moved.aorticValveDisc})
+      if (*disc) (*disc)->centre.y() -= descent;
     return moved;
   }
   // Past the far end of the inflow (or outflow) vessel, within `slack` of its lumen's axis

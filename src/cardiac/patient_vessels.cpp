@@ -109,6 +109,27 @@ std::shared_ptr<const pbd::SurfaceInside> midWallCavity(const LvModel& model, Re
   return std::make_shared<const pbd::SurfaceInside>(std::move(mid), std::move(triangles), column);
 }
 
+// A valve in its ring's plane: the ring's centroid, the unit normal of its fan's area
+// (1/2 sum (p_k - c) x (p_k+1 - c), toward the base: the fan faces +y, lv_model.h) times
+// `towardFlow` (-1 into the cavity for the mitral valve, +1 out of it for the aortic), the
+// lumen's radius, and a gate out to the ring's farthest vertex, so the closed valve walls off
+// the whole opening however oval and tilted the ring is, and no more.
+Orifice valveDisc(const LvModel& model, const std::vector<Index>& ring, const Orifice& lumen, double towardFlow) {
+  const std::vector<Vec3>& x = model.mesh.vertices;
+  Vec3d centroid = Vec3d::Zero();
+  for (Index v : ring) centroid += x[v].cast<double>();
+  centroid /= double(ring.size());
+  Vec3d area = Vec3d::Zero();
+  for (std::size_t k = 0; k < ring.size(); ++k)
+    area += 0.5 * (x[ring[k]].cast<double>() - centroid).cross(x[ring[(k + 1) % ring.size()]].cast<double>() - centroid);
+  Orifice disc;
+  disc.centre = centroid.cast<Real>();
+  disc.forward = (towardFlow * area.normalized()).cast<Real>();
+  disc.radius = lumen.radius;
+  for (Index v : ring) disc.gateRadius = std::max(disc.gateRadius, disc.radial(x[v]));
+  return disc;
+}
+
 }  // namespace
 
 void attachPatientVessels(LvModel& model, const PatientVesselSizes& sizes) {
@@ -122,6 +143,8 @@ void attachPatientVessels(LvModel& model, const PatientVesselSizes& sizes) {
                                 mm(double(apart.norm())) + " apart, expected at least " + mm(double(needed)) +
                                 " (the two orifices' radii and a vessel wall)");
   path.cavity = midWallCavity(model, sizes.edge);
+  path.mitralValveDisc = valveDisc(model, model.mitralRing, path.mitral, -1);
+  path.aorticValveDisc = valveDisc(model, model.aorticRing, path.aortic, +1);
   const VesselTop in = addVessel(model, model.mitralRing, path.mitral, sizes.inflowLength, sizes, Region::InflowVessel);
   const VesselTop out =
       addVessel(model, model.aorticRing, path.aortic, sizes.outflowLength, sizes, Region::OutflowVessel);

@@ -54,8 +54,8 @@ class Valves {
   void follow(const ValveStates& states) { m_states = states; }
   // The valves sit in the orifices where they are now (a descending base carries them).
   void follow(const FlowPath& path) {
-    m_mitral = path.mitral;
-    m_aortic = path.aortic;
+    m_mitral = path.mitralValve();
+    m_aortic = path.aorticValve();
   }
   // A stenotic aortic valve: open, it lets blood through a central opening of this radius only
   // (m, smaller than the orifice); the ring around it stays shut.

@@ -87,8 +87,8 @@ void addValveLeaflets(const cardiac::HeartSimulation& sim, WallMesh& mesh) {
   ValveShape mitral, aortic;
   annulus(model.mitralRing, mitral);
   annulus(model.aorticRing, aortic);
-  mitral.axis = model.flowPath.mitral.forward.cast<float>();
-  aortic.axis = model.flowPath.aortic.forward.cast<float>();
+  mitral.axis = model.flowPath.mitralValve().forward.cast<float>();
+  aortic.axis = model.flowPath.aorticValve().forward.cast<float>();
   // The anterior mitral leaflet faces the aortic valve (the aorto-mitral continuity); the
   // aortic cusps are placed from the direction of the mitral valve.
   mitral.first = aortic.centre - mitral.centre;

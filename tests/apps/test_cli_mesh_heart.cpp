@@ -109,7 +109,9 @@ TEST(CliMeshHeart, ARecordedBeatPumpsBloodThroughItsVessels) {
   EXPECT_LT(j["motion"]["volume_error_max"].get<double>(), 0.02);
   EXPECT_NEAR(j["heart"]["ejection_fraction"].get<double>(), 0.3, 0.01);
   const double stroke = j["heart"]["stroke_volume_ml"].get<double>();
-  EXPECT_GT(j["heart"]["aortic_net_forward_ml"].get<double>(), 0.5 * stroke);
+  // Through the aortic valve in the ring's own plane: all but what the blood's compression
+  // keeps (94% on this recording; with a horizontal valve disc across the tilted ring, 76%).
+  EXPECT_GT(j["heart"]["aortic_net_forward_ml"].get<double>(), 0.85 * stroke);
   EXPECT_EQ(j["tissue"]["inverted_tets"], 0);
 }
 

@@ -69,6 +69,19 @@ TEST_P(PatientBlood, VesselsRiseFromTheAnnuliToPinnedCircularEnds) {
     const auto& x = m.mesh.vertices;
     ASSERT_GT(pbd::signedTetVolume(x[t[0]], x[t[1]], x[t[2]], x[t[3]]), 0);
   }
+  // Each valve lies in its ring's plane: every ring vertex within 3 mm of the disc's plane (the
+  // rings are nearly planar), inside its gate, which reaches the farthest one.
+  for (const auto& [ring, valve] : {std::pair{&m.mitralRing, &path.mitralValve()}, std::pair{&m.aorticRing, &path.aorticValve()}}) {
+    Real farthest = 0;
+    for (Index v : *ring) {
+      EXPECT_LT(std::abs(valve->side(m.mesh.vertices[v])), Real(0.003));
+      farthest = std::max(farthest, valve->radial(m.mesh.vertices[v]));
+    }
+    EXPECT_FLOAT_EQ(valve->gate(), farthest);
+    EXPECT_NEAR(valve->forward.norm(), 1, 1e-5);
+  }
+  EXPECT_LT(path.mitralValve().forward.y(), 0);  // into the cavity
+  EXPECT_GT(path.aorticValve().forward.y(), 0);  // out of it
   // Both lumens larger for the inflow, as the thesis's expert asks.
   EXPECT_GT(path.mitral.radius, path.aortic.radius);
 }
