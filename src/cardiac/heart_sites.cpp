@@ -46,14 +46,7 @@ Real vesselStart(const Orifice& orifice, Real r) { return orifice.centre.y() + r
 std::vector<Vec3> patientCavitySites(const Scenario& scenario, const LvModel& model) {
   const Real d = scenario.blood.spacing, r = scenario.blood.radius;
   std::vector<Vec3> x = model.mesh.vertices;
-  std::vector<pbd::Triangle> closed = model.cavitySurface;
-  for (const std::vector<Index>* ring : {&model.mitralRing, &model.aorticRing}) {
-    Vec3 centroid = Vec3::Zero();
-    for (Index v : *ring) centroid += x[v];
-    x.push_back(centroid / Real(ring->size()));
-    const auto c = Index(x.size() - 1);
-    for (std::size_t k = 0; k < ring->size(); ++k) closed.push_back({c, (*ring)[k], (*ring)[(k + 1) % ring->size()]});
-  }
+  const std::vector<pbd::Triangle> closed = closedOverAnnuli(model, x);
   Vec3 lo = Vec3::Constant(std::numeric_limits<Real>::max()), hi = -lo;
   for (const pbd::Triangle& t : closed)
     for (Index v : t) {

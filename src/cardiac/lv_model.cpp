@@ -259,6 +259,19 @@ Real cavityVolume(const LvModel& model, const std::vector<Vec3>& positions) {
   return Real(sum / 6.0);
 }
 
+std::vector<pbd::Triangle> closedOverAnnuli(const LvModel& model, std::vector<Vec3>& vertices) {
+  std::vector<pbd::Triangle> closed = model.cavitySurface;
+  for (const std::vector<Index>* ring : {&model.mitralRing, &model.aorticRing}) {
+    if (ring->empty()) continue;
+    Vec3 centroid = Vec3::Zero();
+    for (Index v : *ring) centroid += vertices[v];
+    vertices.push_back(centroid / Real(ring->size()));
+    const auto c = Index(vertices.size() - 1);
+    for (std::size_t k = 0; k < ring->size(); ++k) closed.push_back({c, (*ring)[k], (*ring)[(k + 1) % ring->size()]});
+  }
+  return closed;
+}
+
 double myocardiumShare(const LvModel& model, const std::vector<Index>& vertices) {
   auto cavitySide = [&model](Index v) { return v % 2 == 0 && model.region[v] == Region::Myocardium; };
   std::size_t all = 0;

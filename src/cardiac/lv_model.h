@@ -76,6 +76,12 @@ LvModel buildLvModel(const LvGeometryParams& params);
 // orifice ring, by the divergence theorem.
 Real cavityVolume(const LvModel& model, const std::vector<Vec3>& positions);
 
+// The cavity closed over both annuli: appends to `vertices` (indexed as the model's) each
+// ring's centroid and returns the cavity surface with a fan over each ring (centroid, r_k,
+// r_k+1), outward oriented. With the rest positions it is the endocardium closed flat; with
+// others (a mid-wall surface) the same topology.
+std::vector<pbd::Triangle> closedOverAnnuli(const LvModel& model, std::vector<Vec3>& vertices);
+
 // Share of the myocardium's cavity-side vertices (inner layer, even ids) among `vertices`
 // (model vertex ids, each at most once): how much of the wall they are, as the lumped
 // circulation weighs contractility.

@@ -98,14 +98,7 @@ std::shared_ptr<const pbd::SurfaceInside> midWallCavity(const LvModel& model, Re
   const std::vector<Vec3>& x = model.mesh.vertices;
   std::vector<Vec3> mid(x.size());
   for (std::size_t v = 0; v + 1 < x.size(); v += 2) mid[v] = mid[v + 1] = Real(0.5) * (x[v] + x[v + 1]);
-  std::vector<pbd::Triangle> triangles = model.cavitySurface;
-  for (const std::vector<Index>* ring : {&model.mitralRing, &model.aorticRing}) {
-    Vec3 centroid = Vec3::Zero();
-    for (Index v : *ring) centroid += mid[v];
-    mid.push_back(centroid / Real(ring->size()));
-    const auto c = Index(mid.size() - 1);
-    for (std::size_t k = 0; k < ring->size(); ++k) triangles.push_back({c, (*ring)[k], (*ring)[(k + 1) % ring->size()]});
-  }
+  std::vector<pbd::Triangle> triangles = closedOverAnnuli(model, mid);
   return std::make_shared<const pbd::SurfaceInside>(std::move(mid), std::move(triangles), column);
 }
 

@@ -51,15 +51,21 @@ TEST(CliMeshHeart, IdealizedLvRunsFromAnyDirectory) {
   EXPECT_EQ(j["blood"]["inside_wall"], 0);
 }
 
-TEST(CliMeshHeart, ARecordedBeatDrivesTheWallAndItsReportComparesTheVolumes) {
-  // biv-me's endocardium scaled into 25 frames that eject 30% (tests/support/recorded_beat_frames.h).
-  const auto dir = scratchDir("mesh_heart_motion");
+// biv-me's endocardium scaled into 25 frames that eject 30% (tests/support/recorded_beat_frames.h)
+// in dir/beat, and dir/recorded.toml replaying them at `dt` with `extra` appended.
+void writeRecording(const std::filesystem::path& dir, const std::string& dt, const std::string& extra) {
   const std::string endo = std::string(HS_TEST_DATA_DIR) + "/meshes/bivme_patient1/patient1_LV_ENDOCARDIAL_000.obj";
   const auto read = io::parseScenario("[model]\nkind = \"mesh\"\nendocardium = \"" + endo + "\"\n", "x.toml");
   writeFrames(dir / "beat", scaledFrames(read.patient.endocardiumSurface, 25, 0.3, 0.36));
   std::ofstream(dir / "recorded.toml")
-      << "[simulation]\ndt = 0.002\niterations = 10\n[model]\nkind = \"mesh\"\nendocardium = \"beat/frame_000.obj\"\n"
-         "[motion]\nframes = \"beat/frame_{frame:03d}.obj\"\ncount = 25\nperiod = 0.8\n";
+      << "[simulation]\ndt = " << dt << "\niterations = 10\n[model]\nkind = \"mesh\"\nendocardium = \"beat/frame_000.obj\"\n"
+      << "[motion]\nframes = \"beat/frame_{frame:03d}.obj\"\ncount = 25\nperiod = 0.8\n" << extra;
+}
+
+TEST(CliMeshHeart, ARecordedBeatDrivesTheWallAndItsReportComparesTheVolumes) {
+  // biv-me's endocardium scaled into 25 frames that eject 30% (tests/support/recorded_beat_frames.h).
+  const auto dir = scratchDir("mesh_heart_motion");
+  writeRecording(dir, "0.002", "");
   const CliResult r = runHeartsim("run recorded.toml --duration 2.5 --threads 1 --json --out out", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -91,15 +97,10 @@ TEST(CliMeshHeart, ARecordedBeatPumpsBloodThroughItsVessels) {
   // The same recording with blood: the wall follows it, the blood leaves through the aortic
   // vessel in systole and comes back through the mitral one, none lost or left in the wall.
   const auto dir = scratchDir("mesh_heart_motion_blood");
-  const std::string endo = std::string(HS_TEST_DATA_DIR) + "/meshes/bivme_patient1/patient1_LV_ENDOCARDIAL_000.obj";
-  const auto read = io::parseScenario("[model]\nkind = \"mesh\"\nendocardium = \"" + endo + "\"\n", "x.toml");
-  writeFrames(dir / "beat", scaledFrames(read.patient.endocardiumSurface, 25, 0.3, 0.36));
-  std::ofstream(dir / "recorded.toml")
-      << "[simulation]\ndt = 0.001\niterations = 10\n[model]\nkind = \"mesh\"\nendocardium = \"beat/frame_000.obj\"\n"
-         "[motion]\nframes = \"beat/frame_{frame:03d}.obj\"\ncount = 25\nperiod = 0.8\n"
-         "[blood]\nenabled = true\nparticles = 4200\nradius = 0.0018\nspacing = 0.0036\nsupport_radius = 0.0072\n"
-         "rest_density = 1060.0\nviscosity = 0.0035\nxsph = 0.3\nwall_density = true\n"
-         "[circulation]\nvalves = \"timing\"\nloop = true\nwall_slip = true\n";
+  writeRecording(dir, "0.001",
+                 "[blood]\nenabled = true\nparticles = 4200\nradius = 0.0018\nspacing = 0.0036\nsupport_radius = 0.0072\n"
+                 "rest_density = 1060.0\nviscosity = 0.0035\nxsph = 0.3\nwall_density = true\n"
+                 "[circulation]\nvalves = \"timing\"\nloop = true\nwall_slip = true\n");
   const CliResult r = runHeartsim("run recorded.toml --duration 1.7 --threads 2 --json --out out", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
