@@ -21,11 +21,6 @@ std::string mm(double metres) {
   return os.str();
 }
 
-// Where the vessel above one annulus ends, for its flow path.
-struct VesselTop {
-  Real y = 0;
-};
-
 // The unit vector in the xz plane from the axis through `centre` toward x.
 Vec3d radialFrom(const Vec3d& centre, const Vec3d& x) {
   Vec3d d = x - centre;
@@ -49,7 +44,8 @@ void addPrism(const std::vector<Vec3>& x, pbd::Triangle bottom, pbd::Triangle to
 // ring blended toward its circle by s_k = min(1, k / T), raised k h: p_k,j = (1 - s_k) P_j +
 // s_k C_j + k h y^, where C_j is the circle's point at P_j's angle around the axis, at the ring's
 // mean height. T layers take the ring's tilt out gradually, each rising at least h / 2.
-VesselTop addVessel(LvModel& model, const std::vector<Index>& ring, const Orifice& orifice, Real length,
+// Returns the height of the vessel's far end.
+Real addVessel(LvModel& model, const std::vector<Index>& ring, const Orifice& orifice, Real length,
                     const PatientVesselSizes& sizes, Region region) {
   std::vector<Vec3>& x = model.mesh.vertices;
   const std::size_t n = ring.size();
@@ -90,7 +86,7 @@ VesselTop addVessel(LvModel& model, const std::vector<Index>& ring, const Orific
     }
   }
   for (std::size_t j = 0; j < n; ++j) model.pinned.insert(model.pinned.end(), {inner(layers, j), outer(layers, j)});
-  return {Real(centre.y() + double(layers) * h)};
+  return Real(centre.y() + double(layers) * h);
 }
 
 // The mid-wall surface closed over both annuli: the cavity test of a patient's flow path.
@@ -138,8 +134,8 @@ void attachPatientVessels(LvModel& model, const PatientVesselSizes& sizes) {
   path.cavity = midWallCavity(model, sizes.edge);
   path.mitralValveDisc = valveDisc(model, model.mitralRing, path.mitral, -1);
   path.aorticValveDisc = valveDisc(model, model.aorticRing, path.aortic, +1);
-  const VesselTop in = addVessel(model, model.mitralRing, path.mitral, sizes.inflowLength, sizes, Region::InflowVessel);
-  const VesselTop out =
+  const Real inflowTop = addVessel(model, model.mitralRing, path.mitral, sizes.inflowLength, sizes, Region::InflowVessel);
+  const Real outflowTop =
       addVessel(model, model.aorticRing, path.aortic, sizes.outflowLength, sizes, Region::OutflowVessel);
   std::sort(model.pinned.begin(), model.pinned.end());
   for (const pbd::Tet& t : model.mesh.tets) {
@@ -150,8 +146,8 @@ void attachPatientVessels(LvModel& model, const PatientVesselSizes& sizes) {
                                   "model.aortic_loop)");
   }
   model.surface = pbd::boundaryFaces(model.mesh.tets);
-  path.inflowTop = in.y;
-  path.outflowTop = out.y;
+  path.inflowTop = inflowTop;
+  path.outflowTop = outflowTop;
   path.inflowLength = path.inflowTop - path.mitral.centre.y();
   LvGeometryParams& g = model.params;
   g.inflowVesselLength = path.inflowTop - path.mitral.centre.y();

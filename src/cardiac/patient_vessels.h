@@ -11,7 +11,10 @@
 //
 // Above the annuli the flow path is the procedural one's (vertical circular lumens, flow_path.h);
 // below them the ventricle is the patient's cavity: FlowPath::cavity, inside the mid-wall surface
-// (each endocardial vertex halfway to its epicardial partner), replaces the spheroid.
+// (each endocardial vertex halfway to its epicardial partner), replaces the spheroid. The valves
+// lie in the rings' own planes (FlowPath::mitralValve / aorticValve), not across the vessels: a
+// ring may be tilted against the vertical vessel, and a horizontal valve would wall off part of
+// the cavity under its high side and let blood by beside it.
 #include "cardiac/lv_model.h"
 
 namespace hs::cardiac {
@@ -25,7 +28,7 @@ struct PatientVesselSizes {
 
 // Appends both vessels to `model` (a patient's, lvModelFromPatientWall), pins their far rings,
 // labels their vertices Region::InflowVessel / OutflowVessel, recomputes model.surface and sets
-// the flow path (orifices, far ends, the patient cavity) and model.params' vessel sizes.
+// the flow path (far ends, valve discs, the patient cavity) and model.params' vessel sizes.
 // std::invalid_argument with a one-line reason when the vessels would overlap each other or a
 // tet comes out inverted.
 void attachPatientVessels(LvModel& model, const PatientVesselSizes& sizes);
