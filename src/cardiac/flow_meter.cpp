@@ -14,7 +14,7 @@ int crossing(const Orifice& orifice, const Vec3& x, const Vec3& p) {
   if (!forward && !backward) return 0;
   // Where the segment meets the plane: inside the disc?
   const Real t = a / (a - b);
-  if (orifice.radial(x + t * (p - x)) >= orifice.gate()) return 0;
+  if (orifice.radial(x + t * (p - x)) >= orifice.radius) return 0;
   return forward ? 1 : -1;
 }
 
@@ -38,7 +38,7 @@ struct ValveSample {
   std::size_t count[2] = {0, 0};
   void add(const Orifice& o, const Vec3& x, Real p, Real slab) {
     const Real side = o.side(x);
-    if (std::abs(side) > slab || o.radial(x) >= o.gate()) return;
+    if (std::abs(side) > slab || o.radial(x) >= o.radius) return;
     const int k = side >= Real(0) ? 1 : 0;
     sum[k] += double(p);
     ++count[k];

@@ -10,18 +10,17 @@ namespace hs::cardiac {
 
 FlowRegion FlowPath::classify(const Vec3& x, Real lumenSlack, Real endSlack) const {
   if (!x.allFinite()) return FlowRegion::Outside;
+  // Within a vessel's lumen (and a slack of its wall) and below its far end (and a slack).
+  auto inLumen = [&](const Orifice& o, Real top) { return o.radial(x) < o.radius + lumenSlack && x.y() <= top + endSlack; };
   if (cavity) {
-    if (x.y() >= mitral.centre.y() && mitral.radial(x) < mitral.radius + lumenSlack && x.y() <= inflowTop + endSlack)
-      return FlowRegion::InflowVessel;
-    if (x.y() >= aortic.centre.y() && aortic.radial(x) < aortic.radius + lumenSlack && x.y() <= outflowTop + endSlack)
-      return FlowRegion::OutflowVessel;
+    if (x.y() >= mitral.centre.y() && inLumen(mitral, inflowTop)) return FlowRegion::InflowVessel;
+    if (x.y() >= aortic.centre.y() && inLumen(aortic, outflowTop)) return FlowRegion::OutflowVessel;
     return cavity->contains(x) ? FlowRegion::Ventricle : FlowRegion::Outside;
   }
   // The valve planes are the regions' borders, as for the flows (flow_meter.h).
   if (x.y() >= mitral.centre.y()) {
-    if (mitral.radial(x) < mitral.radius + lumenSlack && x.y() <= inflowTop + endSlack) return FlowRegion::InflowVessel;
-    if (aortic.radial(x) < aortic.radius + lumenSlack && x.y() <= outflowTop + endSlack)
-      return FlowRegion::OutflowVessel;
+    if (inLumen(mitral, inflowTop)) return FlowRegion::InflowVessel;
+    if (inLumen(aortic, outflowTop)) return FlowRegion::OutflowVessel;
   }
   if (x.y() >= mitral.centre.y() + plateMid) return FlowRegion::Outside;
   // (x^2 + z^2) / a^2 + y^2 / c^2 <= 1 for the mid-wall spheroid, y clamped at the base plane.

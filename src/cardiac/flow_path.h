@@ -26,11 +26,6 @@ struct Orifice {
   Vec3 centre = Vec3::Zero();
   Vec3 forward = Vec3::UnitY();
   Real radius = 0;
-  // The disc the closed valve walls off and the flow meter counts through: the lumen's, unless
-  // the ring reaches wider (a patient's oval ring: the largest distance of its vertices from
-  // the axis, patient_vessels.h), so that no blood passes the valve beside the disc.
-  Real gateRadius = 0;
-  [[nodiscard]] Real gate() const { return gateRadius > radius ? gateRadius : radius; }
   // Signed distance along `forward`: < 0 upstream, >= 0 downstream.
   [[nodiscard]] Real side(const Vec3& x) const { return forward.dot(x - centre); }
   // Distance from the disc's axis.
@@ -54,7 +49,9 @@ struct FlowPath {
   // procedural heart.
   std::shared_ptr<const pbd::SurfaceInside> cavity;
   // The valves' discs where they differ from the orifices: a patient's ring is tilted against
-  // the vertical vessel above it, and its valve lies in the ring's own plane (patient_vessels.h).
+  // the vertical vessel above it, and its valve lies in the ring's own plane, reaching its
+  // farthest vertex (patient_vessels.h). The valves close these discs and the flow meter counts
+  // through them.
   std::optional<Orifice> mitralValveDisc, aorticValveDisc;
   [[nodiscard]] const Orifice& mitralValve() const { return mitralValveDisc ? *mitralValveDisc : mitral; }
   [[nodiscard]] const Orifice& aorticValve() const { return aorticValveDisc ? *aorticValveDisc : aortic; }
@@ -63,7 +60,8 @@ struct FlowPath {
   // plane inside its lumen, within `lumenSlack` of the lumen wall and `endSlack` beyond its far
   // end (the blood's radius and spacing: particles touching the wall count as inside). The
   // ventricle: inside the mid-wall spheroid, continued as a cylinder up to the base plate's
-  // middle (or inside a patient's `cavity`). Anything else (a particle that went through the wall) is Outside; never Parked.
+  // middle (or inside a patient's `cavity`). Anything else (a particle that went through the
+  // wall) is Outside; never Parked.
   [[nodiscard]] FlowRegion classify(const Vec3& x, Real lumenSlack, Real endSlack) const;
   // The path with the base plate (and both orifices in it) moved `descent` toward the apex,
   // as the lumped circulation's wall moves it (volume_driven_wall.h); the vessels' far ends

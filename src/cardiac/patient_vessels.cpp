@@ -100,8 +100,8 @@ std::shared_ptr<const pbd::SurfaceInside> midWallCavity(const LvModel& model, Re
 
 // A valve in its ring's plane: the ring's centroid, the unit normal of its fan's area
 // (1/2 sum (p_k - c) x (p_k+1 - c), toward the base: the fan faces +y, lv_model.h) times
-// `towardFlow` (-1 into the cavity for the mitral valve, +1 out of it for the aortic), the
-// lumen's radius, and a gate out to the ring's farthest vertex, so the closed valve walls off
+// `towardFlow` (-1 into the cavity for the mitral valve, +1 out of it for the aortic), and a
+// radius out to the ring's farthest vertex (at least the lumen's), so the closed valve walls off
 // the whole opening however oval and tilted the ring is, and no more.
 Orifice valveDisc(const LvModel& model, const std::vector<Index>& ring, const Orifice& lumen, double towardFlow) {
   const std::vector<Vec3>& x = model.mesh.vertices;
@@ -115,7 +115,7 @@ Orifice valveDisc(const LvModel& model, const std::vector<Index>& ring, const Or
   disc.centre = centroid.cast<Real>();
   disc.forward = (towardFlow * area.normalized()).cast<Real>();
   disc.radius = lumen.radius;
-  for (Index v : ring) disc.gateRadius = std::max(disc.gateRadius, disc.radial(x[v]));
+  for (Index v : ring) disc.radius = std::max(disc.radius, disc.radial(x[v]));
   return disc;
 }
 

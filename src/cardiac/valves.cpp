@@ -9,7 +9,7 @@ ValveStates timedValves(bool cycleEnabled, Phase phase) {
 }
 
 bool gateClosedOrifice(const Orifice& orifice, const Vec3& x, Vec3& p, Real radius) {
-  if (orifice.radial(p) >= orifice.gate()) return false;
+  if (orifice.radial(p) >= orifice.radius) return false;
   // C = side(x) * side(p) - r >= 0 with side(x) = +-1 (the half-space the particle came from).
   const Real from = orifice.side(x) >= Real(0) ? Real(1) : Real(-1);
   const Real c = from * orifice.side(p) - radius;

@@ -276,23 +276,25 @@ void resolveMeshModel(ParseState& st) {
   cardiac::BloodSettings& blood = st.scenario.blood;
   if (blood.enabled && st.keyOrigin.find("blood.start") == st.keyOrigin.end())
     blood.start = cardiac::BloodSettings::Start::Heart;
-  if (blood.enabled && blood.start != cardiac::BloodSettings::Start::Heart) {
-    const char* starts[] = {"block", "chamber", "vessel", "heart"};
+  if (blood.enabled && blood.start != cardiac::BloodSettings::Start::Heart)
     fail(st.at("blood.start") + ": blood.start: expected \"heart\" with model.kind = \"mesh\" (a patient's cavity "
                                 "and vessels filled at rest; the other starts are laid out for the procedural "
-                                "heart), got \"" + starts[int(blood.start)] + "\"");
-  }
+                                "heart), got " + detail::findKey("blood.start")->get(st.scenario));
   // Blood enters and leaves a patient's ventricle by vessels on its annuli (patient_vessels.h),
   // sized as a real heart's unless the scenario says (the procedural defaults are the thesis's).
-  const std::pair<const char*, Real*> vesselKeys[] = {
-      {"model.inflow_vessel_length", &st.scenario.geometry.inflowVesselLength},
-      {"model.outflow_vessel_length", &st.scenario.geometry.outflowVesselLength},
-      {"model.vessel_wall_thickness", &st.scenario.geometry.vesselWallThickness}};
-  for (const auto& [key, value] : vesselKeys) {
+  struct VesselKey {
+    const char* key;
+    Real* value;
+    double unset, lo, hi;  // m
+  };
+  const VesselKey vesselKeys[] = {
+      {"model.inflow_vessel_length", &st.scenario.geometry.inflowVesselLength, 0.03, 0.01, 0.1},
+      {"model.outflow_vessel_length", &st.scenario.geometry.outflowVesselLength, 0.03, 0.01, 0.1},
+      {"model.vessel_wall_thickness", &st.scenario.geometry.vesselWallThickness, 0.002, 0.0005, 0.005}};
+  for (const auto& [key, value, unset, lo, hi] : vesselKeys) {
     if (!blood.enabled) break;  // no blood, no vessels
-    const bool thickness = std::string_view(key) == "model.vessel_wall_thickness";
-    if (st.keyOrigin.find(key) == st.keyOrigin.end()) *value = Real(thickness ? 0.002 : 0.03);
-    const double v = double(*value), lo = thickness ? 0.0005 : 0.01, hi = thickness ? 0.005 : 0.1;
+    if (st.keyOrigin.find(key) == st.keyOrigin.end()) *value = Real(unset);
+    const double v = double(*value);
     if (!(v >= lo && v <= hi))
       fail(st.at(key) + ": " + key + ": must be within [" + detail::formatNumber(lo) + ", " +
            detail::formatNumber(hi) + "] m for a patient's vessels (model.kind = \"mesh\"), got " +

@@ -117,7 +117,9 @@ SurfaceInside::SurfaceInside(std::vector<Vec3> vertices, std::vector<Triangle> t
         const std::size_t cube = (i * m_columnsZ + k) * m_cubesY + j;
         const Vec3 centre(m_minX + (Real(i) + Real(0.5)) * columnSize, m_minY + (Real(j) + Real(0.5)) * columnSize,
                           m_minZ + (Real(k) + Real(0.5)) * columnSize);
-        m_cubes[cube] = crossed[cube] ? CubeState::Crossed : columnTest(centre) ? CubeState::Inside : CubeState::Outside;
+        m_cubes[cube] = crossed[cube]                          ? CubeState::Crossed
+                        : columnTest(centre, i * m_columnsZ + k) ? CubeState::Inside
+                                                                 : CubeState::Outside;
       }
 }
 
@@ -137,12 +139,10 @@ bool SurfaceInside::contains(const Vec3& p) const {
     const CubeState state = m_cubes[column * m_cubesY + std::size_t(layer)];
     if (state != CubeState::Crossed) return state == CubeState::Inside;
   }
-  return columnTest(p);
+  return columnTest(p, column);
 }
 
-bool SurfaceInside::columnTest(const Vec3& p) const {
-  std::size_t column = 0;
-  if (!columnOf(p.x(), p.z(), column)) return false;
+bool SurfaceInside::columnTest(const Vec3& p, std::size_t column) const {
   bool inside = false;
   for (Index k = m_columnStart[column]; k < m_columnStart[column + 1]; ++k) {
     const Triangle& t = m_triangles[m_items[k]];

@@ -36,7 +36,8 @@ class SurfaceInside {
 
  private:
   [[nodiscard]] bool columnOf(Real x, Real z, std::size_t& column) const;
-  [[nodiscard]] bool columnTest(const Vec3& p) const;
+  // The parity over the triangles of p's column.
+  [[nodiscard]] bool columnTest(const Vec3& p, std::size_t column) const;
 
   enum class CubeState : std::uint8_t { Outside, Inside, Crossed };
 

@@ -70,14 +70,15 @@ TEST_P(PatientBlood, VesselsRiseFromTheAnnuliToPinnedCircularEnds) {
     ASSERT_GT(pbd::signedTetVolume(x[t[0]], x[t[1]], x[t[2]], x[t[3]]), 0);
   }
   // Each valve lies in its ring's plane: every ring vertex within 3 mm of the disc's plane (the
-  // rings are nearly planar), inside its gate, which reaches the farthest one.
-  for (const auto& [ring, valve] : {std::pair{&m.mitralRing, &path.mitralValve()}, std::pair{&m.aorticRing, &path.aorticValve()}}) {
+  // rings are nearly planar), inside its disc, which reaches the farthest one (or the lumen).
+  for (const auto& [ring, valve, lumen] : {std::tuple{&m.mitralRing, &path.mitralValve(), &path.mitral},
+                                           std::tuple{&m.aorticRing, &path.aorticValve(), &path.aortic}}) {
     Real farthest = 0;
     for (Index v : *ring) {
       EXPECT_LT(std::abs(valve->side(m.mesh.vertices[v])), Real(0.003));
       farthest = std::max(farthest, valve->radial(m.mesh.vertices[v]));
     }
-    EXPECT_FLOAT_EQ(valve->gate(), farthest);
+    EXPECT_FLOAT_EQ(valve->radius, std::max(farthest, lumen->radius));
     EXPECT_NEAR(valve->forward.norm(), 1, 1e-5);
   }
   EXPECT_LT(path.mitralValve().forward.y(), 0);  // into the cavity
