@@ -43,9 +43,18 @@ struct BenchCase {
   std::function<nlohmann::json(int threads, double seconds)> run;
 };
 
+// Blood particles in the flow (not waiting in the body or parked): the ones a step works on.
+std::size_t activeBlood(const cardiac::HeartSimulation& sim) {
+  const pbd::Particles& p = sim.particles();
+  std::size_t active = 0;
+  for (std::size_t i = sim.firstBloodParticle(); i < p.size(); ++i) active += p.active(i) ? 1 : 0;
+  return active;
+}
+
 // Steps a simulation for at least `seconds` after a warm-up, in windows of about 0.2 s, and
 // reports the median window's throughput (a shared machine's hiccups land in a few windows;
-// the median ignores them) with the slowest and fastest windows beside it.
+// the median ignores them) with the slowest and fastest windows beside it, and the blood
+// particles in the flow, counted at the end of each window outside its timing.
 nlohmann::json measure(cardiac::HeartSimulation& sim, std::size_t particles, int threads, double seconds,
                        cardiac::StepProfile* profile = nullptr) {
   cardiac::RunMonitor monitor(sim, cardiac::MonitorSettings::healthOnly());
@@ -53,6 +62,7 @@ nlohmann::json measure(cardiac::HeartSimulation& sim, std::size_t particles, int
   if (profile) *profile = {};
   long steps = 0;
   std::vector<double> windowRates;
+  double activeSum = 0;
   const auto start = Clock::now();
   double elapsed = 0;
   while (elapsed < seconds || windowRates.size() < 5) {
@@ -65,15 +75,19 @@ nlohmann::json measure(cardiac::HeartSimulation& sim, std::size_t particles, int
       window = std::chrono::duration<double>(Clock::now() - windowStart).count();
     }
     windowRates.push_back(double(windowSteps) / window);
+    activeSum += double(activeBlood(sim));
     checkHealth(monitor);
     steps += windowSteps;
     elapsed = std::chrono::duration<double>(Clock::now() - start).count();
   }
   std::sort(windowRates.begin(), windowRates.end());
   const double stepsPerSecond = windowRates[windowRates.size() / 2];
+  const double active = activeSum / double(windowRates.size());
   return {{"steps_per_s", stepsPerSecond},
           {"ns_per_particle_step", 1e9 / (stepsPerSecond * double(particles))},
           {"particles", particles},
+          {"active_particles_mean", active},
+          {"ns_per_active_particle_step", 1e9 / (stepsPerSecond * std::max(active, 1.0))},
           {"threads", threads},
           {"steps", steps},
           {"seconds", elapsed},
@@ -283,6 +297,17 @@ int benchCommand(const BenchOptions& options) {
     }
     chosen.push_back(found);
   }
+  std::vector<BenchCase> files;  // checked here so that a bad file is one line and exit 2
+  for (const std::string& path : options.scenarios) {
+    try {
+      io::loadScenario(path);
+    } catch (const std::exception& e) {
+      std::cerr << "heartsim: error: " << e.what() << '\n';
+      return kExitBadInput;
+    }
+    files.push_back(heartCase(path));
+  }
+  for (const BenchCase& c : files) chosen.push_back(&c);
   if (chosen.empty())
     for (const BenchCase& c : cases) chosen.push_back(&c);
   const int threads = options.threads > 0 ? options.threads : omp_get_num_procs();

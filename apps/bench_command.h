@@ -1,5 +1,6 @@
 #pragma once
-// `heartsim bench [--case NAME]... [--threads N] [--json]`: end-to-end throughput cases.
+// `heartsim bench [--case NAME]... [--scenario FILE]... [--threads N] [--json]`: end-to-end
+// throughput cases; a scenario file is stepped as the real-size hearts are, with each stage's time.
 // Each case runs in its own child process so that its peak resident memory is its own.
 #include <string>
 #include <vector>
@@ -7,7 +8,8 @@
 namespace hs::app {
 
 struct BenchOptions {
-  std::vector<std::string> cases;  // empty: all
+  std::vector<std::string> cases;      // empty: all (unless scenario files are named)
+  std::vector<std::string> scenarios;  // .toml files benchmarked as the heart cases are
   int threads = 0;                 // 0 = all cores
   bool json = false;
   double seconds = 3.0;            // measuring time per case (after warm-up)

@@ -133,6 +133,10 @@ void addBenchCommand(CLI::App& app, Commands& c) {
   hs::app::BenchOptions& bench = c.bench;
   CLI::App* benchApp = c.benchApp = app.add_subcommand("bench", "End-to-end throughput benchmarks");
   benchApp->add_option("--case", bench.cases, "Case to run (repeatable; default: all)")->expected(1)->take_all();
+  benchApp->add_option("--scenario", bench.scenarios,
+                       "A scenario .toml file to step as the heart cases are, with each stage's time (repeatable)")
+      ->expected(1)
+      ->take_all();
   addThreadsOption(benchApp, bench.threads);
   benchApp->add_option("--seconds", bench.seconds, "Measuring time per case (s)")->check(CLI::Range(0.1, 600.0));
   benchApp->add_flag("--json", bench.json, "Print one JSON object on stdout");

@@ -46,11 +46,23 @@ struct ValveSample {
   [[nodiscard]] double mean(int k) const { return count[k] > 0 ? sum[k] / double(count[k]) : 0.0; }
 };
 
+// Below this many blood particles the regions are found on one thread.
+constexpr std::ptrdiff_t kParallelRegions = 1024;
+
 }  // namespace
 
 void FlowMeter::measure(const pbd::Particles& particles, Index first, const std::vector<Real>& pressures,
-                        const ValveStates& valves) {
+                        const ValveStates& valves, int threads) {
   assert(m_start.size() == particles.size() - first);
+  // Each particle's region first, in parallel (a pure function of its position), so that the
+  // sums below keep one order for any thread count.
+  const auto blood = std::ptrdiff_t(particles.size() - first);
+  m_regions.resize(std::size_t(blood));
+#pragma omp parallel for schedule(dynamic, 256) num_threads(threads) if (blood >= kParallelRegions)
+  for (std::ptrdiff_t b = 0; b < blood; ++b) {
+    const std::size_t i = first + std::size_t(b);
+    if (particles.active(i)) m_regions[std::size_t(b)] = m_path.classify(particles.position[i], m_radius, m_spacing);
+  }
   FlowStep s;
   s.valves = valves;
   std::array<double, kFlowRegionCount> pressureSum{};
@@ -66,7 +78,7 @@ void FlowMeter::measure(const pbd::Particles& particles, Index first, const std:
     s.aorticForward += a > 0, s.aorticBackward += a < 0;
     if (a > 0) s.aorticJet = std::max(s.aorticJet, double(particles.velocity[i].norm()));
     const Real p = i < pressures.size() ? pressures[i] : Real(0);
-    const FlowRegion r = m_path.classify(x1, m_radius, m_spacing);
+    const FlowRegion r = m_regions[i - first];
     ++s.count[std::size_t(r)];
     pressureSum[std::size_t(r)] += double(p);
     mitral.add(m_path.mitralValve(), x1, p, slab);

@@ -41,9 +41,10 @@ class FlowMeter {
   // Start of a step: remembers where the blood [first, end) starts.
   void begin(const pbd::Particles& particles, Index first);
   // End of a step: crossings, regions and pressures of the active blood. `pressures` is
-  // indexed by particle (pbd::FluidSolver::pressures()).
+  // indexed by particle (pbd::FluidSolver::pressures()). The regions are found on `threads`
+  // threads (a patient's cavity test is the costly part); the sums run in particle order.
   void measure(const pbd::Particles& particles, Index first, const std::vector<Real>& pressures,
-               const ValveStates& valves);
+               const ValveStates& valves, int threads = 1);
   // The closed loop's share of the step (blood_loop.h): left, re-entered, waiting.
   void recordLoop(std::size_t returned, std::size_t reentered, std::size_t waiting);
 
@@ -63,7 +64,8 @@ class FlowMeter {
   FlowPath m_path;
   Real m_radius, m_spacing, m_particleVolume;
   double m_atrialPressurePa;
-  std::vector<Vec3> m_start;  // blood start-of-step positions (blood index)
+  std::vector<Vec3> m_start;          // blood start-of-step positions (blood index)
+  std::vector<FlowRegion> m_regions;  // scratch: each blood particle's region this step
   FlowStep m_last;
 };
 

@@ -436,7 +436,7 @@ void HeartSimulation::resolveBloodContacts(const pbd::StepContext& context) {
 void HeartSimulation::endStep(const pbd::StepContext&) {
   if (!m_circulation) return;
   Circulation& c = *m_circulation;
-  c.meter.measure(m_particles, m_firstBloodParticle, m_fluid->pressures(), c.valves.states());
+  c.meter.measure(m_particles, m_firstBloodParticle, m_fluid->pressures(), c.valves.states(), m_threads);
   const BloodLoop::Turnover turnover =
       c.settings.loop ? c.loop.circulate(m_particles, m_firstBloodParticle) : BloodLoop::Turnover{};
   c.meter.recordLoop(turnover.returned, turnover.reentered, c.loop.waiting());

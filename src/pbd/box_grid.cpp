@@ -6,6 +6,9 @@ namespace {
 
 // Cells per box at most: the grid stays O(boxes) in memory however the boxes are spread.
 constexpr double kMaxCellsPerBox = 8;
+// A box of the mean size spans about two cells per axis: the work per box that decides whether
+// binning forks.
+constexpr std::size_t kCellsPerBox = 8;
 // Cell coordinates are stored in 32 bits per axis.
 constexpr double kMaxCoord = 1 << 30;
 
@@ -47,7 +50,7 @@ void BoxGrid::build(const std::vector<Box3>& boxes, int threads) {
     CellBox r;
     if (!usable(boxes[i]) || !m_cells.cellRange(boxes[i].lo, boxes[i].hi, r)) return;
     m_cells.forEachCell(r, [&](std::size_t cell, std::int64_t, std::int64_t, std::int64_t) { emit(cell); });
-  });
+  }, kCellsPerBox);
   // Too many entries for an Index (never for a mesh that fits in memory): no grid, every query
   // goes to the caller's other structure.
   m_unbinned = !fits;

@@ -2,14 +2,16 @@
 // the histogram and prefix-sum steps of the counting sort.
 #include "pbd/cell_grid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace hs::pbd {
 namespace {
 
-// Below this many items one thread bins faster than a fork-join of two (a few microseconds).
-constexpr std::size_t kMinParallelItems = 8192;
+// Below this many entries (items x their cells) one thread bins faster than a fork-join of two
+// (a few microseconds).
+constexpr std::size_t kMinParallelEntries = 8192;
 // Cell counts along an axis are stored as integers; a larger count only occurs on the way to a
 // grid within its cell budget and is never indexed.
 constexpr double kMaxDim = 4611686018427387904.0;  // 2^62
@@ -38,14 +40,14 @@ double CellIndexing::coverWithin(const std::array<double, 3>& lo, const std::arr
   }
 }
 
-int CellGrid::teamsFor(std::size_t itemCount, int threads) {
-  return threads > 1 && itemCount >= kMinParallelItems ? threads : 1;
+int CellGrid::teamsFor(std::size_t itemCount, int threads, std::size_t cellsPerItem) {
+  return threads > 1 && itemCount * std::max<std::size_t>(cellsPerItem, 1) >= kMinParallelEntries ? threads : 1;
 }
 
-void CellGrid::reserve(std::size_t cells, std::size_t items, int threads) {
+void CellGrid::reserve(std::size_t cells, std::size_t items, int threads, std::size_t cellsPerItem) {
   m_offsets.reserve(cells + 1);
   m_items.reserve(items);
-  m_counts.reserve(cells * std::size_t(teamsFor(items, threads)));
+  m_counts.reserve(cells * std::size_t(teamsFor(items, threads, cellsPerItem)));
 }
 
 void CellGrid::startCounting(std::size_t cellCount, int teams) {

@@ -114,18 +114,20 @@ class CellGrid {
   // Counting sort of items 0 .. itemCount-1 into cellCount cells: cellsOf(i, emit) calls
   // emit(cell) once for every cell of item i (cell < cellCount; any number of cells, in any
   // order, none to leave the item out). cellsOf is called twice per item (count, then fill),
-  // from `threads` threads at once when there are enough items. Returns false, leaving the grid
-  // empty, when the entries would overflow an Index.
+  // from `threads` threads at once when there is enough work: itemCount x cellsPerItem (the
+  // caller's estimate of an item's cells; a tet's box spans up to 27). Returns false, leaving
+  // the grid empty, when the entries would overflow an Index.
   template <class CellsOf>
-  [[nodiscard]] bool bin(std::size_t itemCount, std::size_t cellCount, int threads, const CellsOf& cellsOf);
+  [[nodiscard]] bool bin(std::size_t itemCount, std::size_t cellCount, int threads, const CellsOf& cellsOf,
+                         std::size_t cellsPerItem = 1);
 
   // Buffers for later builds of `items` items (and at least as many entries) into `cells`
   // cells on `threads` threads, so that they do not allocate.
-  void reserve(std::size_t cells, std::size_t items, int threads = 1);
+  void reserve(std::size_t cells, std::size_t items, int threads = 1, std::size_t cellsPerItem = 1);
 
-  // Threads bin() runs on for itemCount items (1 below the size where a fork-join pays): also
-  // the right team for a user's own per-item loops around it.
-  static int teamsFor(std::size_t itemCount, int threads);
+  // Threads bin() runs on for itemCount items of about cellsPerItem cells each (1 below the
+  // work where a fork-join pays): also the right team for a user's own per-item loops around it.
+  static int teamsFor(std::size_t itemCount, int threads, std::size_t cellsPerItem = 1);
 
   std::size_t cellCount() const { return m_offsets.empty() ? 0 : m_offsets.size() - 1; }
   std::size_t entryCount() const { return m_items.size(); }
@@ -166,8 +168,9 @@ class CellGrid {
 };
 
 template <class CellsOf>
-bool CellGrid::bin(std::size_t itemCount, std::size_t cellCount, int threads, const CellsOf& cellsOf) {
-  const int teams = teamsFor(itemCount, threads);
+bool CellGrid::bin(std::size_t itemCount, std::size_t cellCount, int threads, const CellsOf& cellsOf,
+                   std::size_t cellsPerItem) {
+  const int teams = teamsFor(itemCount, threads, cellsPerItem);
   startCounting(cellCount, teams);
   bool fits = true;
 #pragma omp parallel num_threads(teams) if (teams > 1)

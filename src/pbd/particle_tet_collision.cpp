@@ -155,7 +155,7 @@ Vec3 ParticleTetCollider::nearestBoundaryExit(const std::vector<Vec3>& x, const 
 }
 
 Vec3 ParticleTetCollider::nearestBoundaryExitAt(const std::vector<Vec3>& positions, const Vec3& p, Real radius) {
-  rebuild(positions, m_builtValid ? m_builtPadding : Real(0));
+  rebuild(positions, m_builtValid ? m_builtPadding : Real(0), 1);
   WallContact contact;
   return nearestBoundaryExit(positions, p, radius, contact);
 }
@@ -184,7 +184,7 @@ Vec3 ParticleTetCollider::nearestFreeBoundaryExit(const std::vector<Vec3>& x, co
   return p;
 }
 
-void ParticleTetCollider::rebuild(const std::vector<Vec3>& positions, Real padding) {
+void ParticleTetCollider::rebuild(const std::vector<Vec3>& positions, Real padding, int threads) {
   // The solid does not move during a fluid solve's iterations: the grid of the last call is
   // still right when the solid's vertices and the padding are bitwise the same (a 12-byte
   // compare per vertex against a build over every tet).
@@ -208,6 +208,7 @@ void ParticleTetCollider::rebuild(const std::vector<Vec3>& positions, Real paddi
   // padded by a hair to keep such points among the candidates.
   TetGridSettings grid = m_grid.settings();
   grid.padding = padding;
+  grid.threads = threads;
   // Cells of half a tet: the grid is built twice a step but asked once per particle per
   // density iteration, and most of a query is the isPointInTet of each candidate. Halving the
   // cell edge cuts the candidates of a cell at the wall (each tet enters up to 27 cells
@@ -332,7 +333,7 @@ std::size_t ParticleTetCollider::resolve(Particles& particles, Index first, Inde
                                          const ParticleTetSettings& settings) {
   std::vector<Vec3>& p = particles.predicted;
   const std::vector<Real>& w = particles.inverseMass;
-  rebuild(p, Real(1e-3) * settings.radius);
+  rebuild(p, Real(1e-3) * settings.radius, settings.threads);
   const std::ptrdiff_t count = std::ptrdiff_t(end) - std::ptrdiff_t(first);
   // Two-way: each iteration fills only its own slot; the wall is read, never written, in the
   // parallel loop.
@@ -373,7 +374,7 @@ std::size_t ParticleTetCollider::resolve(Particles& particles, Index first, Inde
 std::size_t ParticleTetCollider::resolvePoints(const Particles& particles, std::vector<Vec3>& points,
                                                std::span<const Index> ids,
                                                const ParticleTetSettings& settings) {
-  rebuild(particles.predicted, Real(1e-3) * settings.radius);
+  rebuild(particles.predicted, Real(1e-3) * settings.radius, settings.threads);
   const auto count = std::ptrdiff_t(ids.size());
   std::size_t moved = 0;
 #pragma omp parallel for schedule(dynamic, 64) num_threads(settings.threads) reduction(+ : moved) \
@@ -392,7 +393,7 @@ std::size_t ParticleTetCollider::countInside(const std::vector<Vec3>& positions,
                                              Real minDepth, int threads) {
   // A point deeper than minDepth inside a tet lies inside the tet's own box: any padding
   // will do, so the last build's is kept and an unmoved solid needs no rebuild.
-  rebuild(positions, m_builtValid ? m_builtPadding : Real(0));
+  rebuild(positions, m_builtValid ? m_builtPadding : Real(0), threads);
   const std::ptrdiff_t count = std::ptrdiff_t(end) - std::ptrdiff_t(first);
   std::size_t inside = 0;
 #pragma omp parallel for schedule(dynamic, 64) num_threads(threads) reduction(+ : inside) \

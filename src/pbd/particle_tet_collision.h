@@ -144,7 +144,8 @@ class ParticleTetCollider {
     bool active = false;
   };
 
-  void rebuild(const std::vector<Vec3>& positions, Real padding);
+  // The tet grid over `positions` (binned on `threads`; the same grid on any number).
+  void rebuild(const std::vector<Vec3>& positions, Real padding, int threads);
   // Pushes x (a particle that started this step at `previous`) out of the solid at positions
   // p (start of step: `start`); true if it moved, and then `contact` is the wall point of the
   // last push.

@@ -1,6 +1,9 @@
 #include "pbd/tet_grid.h"
 
+#include <omp.h>
+
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <stdexcept>
 
@@ -17,6 +20,14 @@ constexpr double kCellGrowth = 1.001;
 constexpr double kMaxCoord = 1e15;
 // Below this many entries copying the boxes on one thread beats a fork-join.
 constexpr std::ptrdiff_t kParallelEntries = 32768;
+// A tet's box spans 2 to 3 cells of half its extent along each axis (cellSizeFactor 0.5): up to
+// 27 cells, the work per tet that decides whether binning forks.
+constexpr std::size_t kCellsPerTet = 27;
+// The boxes are computed in this many fixed chunks, whatever the thread count, so that the
+// summed extent (and the cell size from it) is the same bits on any number of threads.
+constexpr std::size_t kBoxChunks = 8;
+// Below this many tets the boxes are computed on one thread.
+constexpr std::size_t kParallelBoxes = 1024;
 
 }  // namespace
 
@@ -25,35 +36,51 @@ TetGrid::BoxStats TetGrid::computeBoxes(const std::vector<Vec3>& vertices, const
   m_lo.resize(n);
   m_hi.resize(n);
   constexpr double inf = std::numeric_limits<double>::infinity();
-  BoxStats s{{inf, inf, inf}, {-inf, -inf, -inf}};
+  std::array<BoxStats, kBoxChunks> chunks;
+  chunks.fill(BoxStats{{inf, inf, inf}, {-inf, -inf, -inf}});
   const Vec3 pad = Vec3::Constant(m_settings.padding);
-  for (std::size_t t = 0; t < n; ++t) {
-    Vec3 a = vertices[tets[t][0]], b = a;
-    bool allFinite = a.allFinite();
-    for (std::size_t k = 1; k < 4; ++k) {
-      const Vec3& v = vertices[tets[t][k]];
-      allFinite = allFinite && v.allFinite();  // cwiseMin/Max may silently drop a NaN
-      a = a.cwiseMin(v);
-      b = b.cwiseMax(v);
+  const auto chunkCount = std::ptrdiff_t(kBoxChunks);
+#pragma omp parallel for schedule(static) num_threads(m_settings.threads) if (n >= kParallelBoxes)
+  for (std::ptrdiff_t chunk = 0; chunk < chunkCount; ++chunk) {
+    BoxStats& s = chunks[std::size_t(chunk)];
+    for (std::size_t t = n * std::size_t(chunk) / kBoxChunks, end = n * std::size_t(chunk + 1) / kBoxChunks; t < end;
+         ++t) {
+      Vec3 a = vertices[tets[t][0]], b = a;
+      bool allFinite = a.allFinite();
+      for (std::size_t k = 1; k < 4; ++k) {
+        const Vec3& v = vertices[tets[t][k]];
+        allFinite = allFinite && v.allFinite();  // cwiseMin/Max may silently drop a NaN
+        a = a.cwiseMin(v);
+        b = b.cwiseMax(v);
+      }
+      a -= pad;
+      b += pad;
+      if (!allFinite || !a.allFinite() || !b.allFinite()) {
+        // An empty box (lo > hi) contains nothing; such a tet is entered in no cell.
+        m_lo[t] = Vec3::Constant(std::numeric_limits<Real>::max());
+        m_hi[t] = Vec3::Constant(std::numeric_limits<Real>::lowest());
+        continue;
+      }
+      m_lo[t] = a;
+      m_hi[t] = b;
+      for (int k = 0; k < 3; ++k) {
+        s.lo[std::size_t(k)] = std::min(s.lo[std::size_t(k)], double(a[k]));
+        s.hi[std::size_t(k)] = std::max(s.hi[std::size_t(k)], double(b[k]));
+      }
+      s.extentSum += double((b - a).maxCoeff());
+      ++s.finite;
     }
-    a -= pad;
-    b += pad;
-    if (!allFinite || !a.allFinite() || !b.allFinite()) {
-      // An empty box (lo > hi) contains nothing; such a tet is entered in no cell.
-      m_lo[t] = Vec3::Constant(std::numeric_limits<Real>::max());
-      m_hi[t] = Vec3::Constant(std::numeric_limits<Real>::lowest());
-      continue;
-    }
-    m_lo[t] = a;
-    m_hi[t] = b;
-    for (int k = 0; k < 3; ++k) {
-      s.lo[std::size_t(k)] = std::min(s.lo[std::size_t(k)], double(a[k]));
-      s.hi[std::size_t(k)] = std::max(s.hi[std::size_t(k)], double(b[k]));
-    }
-    s.extentSum += double((b - a).maxCoeff());
-    ++s.finite;
   }
-  return s;
+  BoxStats all = chunks[0];
+  for (std::size_t c = 1; c < kBoxChunks; ++c) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      all.lo[k] = std::min(all.lo[k], chunks[c].lo[k]);
+      all.hi[k] = std::max(all.hi[k], chunks[c].hi[k]);
+    }
+    all.extentSum += chunks[c].extentSum;
+    all.finite += chunks[c].finite;
+  }
+  return all;
 }
 
 std::size_t TetGrid::sizeCells(const BoxStats& boxes, std::size_t tetCount) {
@@ -73,7 +100,7 @@ std::size_t TetGrid::sizeCells(const BoxStats& boxes, std::size_t tetCount) {
   // Reserve for the largest cell count this tet count allows, so that rebuilds with moved
   // vertices never reallocate the cell array.
   if (tetCount != m_reservedFor) {
-    m_grid.reserve(std::size_t(limit), tetCount, m_settings.threads);
+    m_grid.reserve(std::size_t(limit), tetCount, m_settings.threads, kCellsPerTet);
     m_reservedFor = tetCount;
   }
   return std::size_t(cells);
@@ -88,7 +115,7 @@ void TetGrid::build(const std::vector<Vec3>& vertices, const std::vector<Tet>& t
   const bool fits = m_grid.bin(n, cellCount, m_settings.threads, [this](std::size_t t, auto&& emit) {
     CellBox r;
     if (m_cells.cellRange(m_lo[t], m_hi[t], r)) m_cells.forEachCell(r, [&emit](std::size_t cell, auto...) { emit(cell); });
-  });
+  }, kCellsPerTet);
   if (!fits) throw std::length_error("TetGrid: too many entries");
   const std::vector<Index>& items = m_grid.items();
   m_entryBoxes.resize(items.size());
