@@ -309,6 +309,43 @@ RemeshedSurface remeshIsotropic(const std::vector<Vec3>& vertices, const std::ve
   return out;
 }
 
+double restoreCappedVolume(std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles, double targetVolume) {
+  const double sign = cappedSignedVolume(vertices, triangles) < 0 ? -1.0 : 1.0;  // triangles facing in or out
+  const double target = std::abs(targetVolume);
+  // Each vertex's share of the distance: 0 on a loop, 1/2 next to one (so that the rim's
+  // triangles do not tilt by the whole step at once), 1 beyond.
+  std::vector<double> share(vertices.size(), 1);
+  for (const std::vector<Index>& loop : boundaryLoopVertices(triangles))
+    for (Index v : loop) share[v] = 0;
+  const std::vector<double> loopShare = share;
+  for (const Triangle& t : triangles)
+    for (Index a : t)
+      for (Index b : t)
+        if (loopShare[b] == 0 && loopShare[a] != 0) share[a] = 0.5;
+  // Outward (away from the cavity) unit normals times the shares.
+  std::vector<Vec3d> outward = vertexNormals(vertices, triangles);
+  for (std::size_t v = 0; v < outward.size(); ++v) outward[v] *= sign * share[v];
+  const std::vector<Vec3> rest = vertices;
+  auto volumeAt = [&](double d) {
+    for (std::size_t v = 0; v < vertices.size(); ++v) vertices[v] = (rest[v].cast<double>() + d * outward[v]).cast<Real>();
+    return std::abs(cappedSignedVolume(vertices, triangles));
+  };
+  double d0 = 0, v0 = volumeAt(0);
+  if (!(target > 0) || std::abs(v0 - target) <= 1e-9 * target) return 0;
+  // First guess: the missing volume spread over the surface, dV/dd ~ area.
+  double area = 0;
+  for (const Triangle& t : triangles)
+    area += 0.5 * (vertices[t[1]] - vertices[t[0]]).cast<double>().cross((vertices[t[2]] - vertices[t[0]]).cast<double>()).norm();
+  double d1 = area > 0 ? (target - v0) / area : 0, v1 = volumeAt(d1);
+  for (int step = 0; step < 20 && std::abs(v1 - target) > 1e-9 * target && v1 != v0; ++step) {
+    const double d2 = d1 + (target - v1) * (d1 - d0) / (v1 - v0);
+    d0 = d1, v0 = v1;
+    d1 = d2, v1 = volumeAt(d1);
+  }
+  volumeAt(d1);
+  return d1;
+}
+
 EdgeLengthStats edgeLengthStats(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles) {
   EdgeLengthStats st;
   std::vector<Edge> edges;

@@ -30,6 +30,14 @@ struct RemeshedSurface {
 RemeshedSurface remeshIsotropic(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles,
                                 const RemeshSettings& settings);
 
+// Chords cut inside a curved surface: a remeshed cup encloses less than its input (biv-me's
+// endocardium 0.8% less at 5 mm edges, 2.1% at 8 mm). Moves the vertices along their unit
+// normals by one common distance d (half of it next to a boundary loop) so that the surface,
+// every loop closed by a fan from its centroid (cappedSignedVolume), encloses |targetVolume|
+// again: V(d) is a cubic in d, solved by secant steps to a relative 1e-9 (or 20 steps). The
+// loops stay where they are. Returns d (positive: outward, away from the cavity).
+double restoreCappedVolume(std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles, double targetVolume);
+
 // Edge lengths of a surface: mean, shortest and longest (for tests and reports).
 struct EdgeLengthStats {
   double mean = 0, shortest = 0, longest = 0;

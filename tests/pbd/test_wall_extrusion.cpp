@@ -224,6 +224,42 @@ TEST(RemeshIsotropic, CupKeepsItsLoopOnTheRim) {
   EXPECT_GT(cappedSignedVolume(r.vertices, r.triangles), 0);
 }
 
+// A cup of the unit sphere remeshed coarsely holds less than the input (chords inside the
+// curve); restoring moves the vertices out by one distance (half of it beside the rim) until the
+// capped volumes agree, leaves the rim where it was, and works for either orientation.
+TEST(RestoreCappedVolume, GivesACoarseCupItsInputVolumeBackAndLeavesTheRim) {
+  const auto sphere = makeSphere(4, 1.0);
+  std::vector<Index> kept;
+  const auto cupFaces = cupTriangles(sphere, 0.3);
+  for (Index f = 0; f < sphere.triangles.size(); ++f)
+    if (std::find(cupFaces.begin(), cupFaces.end(), sphere.triangles[f]) != cupFaces.end()) kept.push_back(f);
+  const auto cup = extractSubSurface(sphere.vertices, sphere.triangles, kept);
+  const double input = cappedSignedVolume(cup.vertices, cup.triangles);
+  for (const bool reversed : {false, true}) {
+    RemeshedSurface r = remeshIsotropic(cup.vertices, cup.triangles, {0.3, 6});
+    const auto loops = boundaryLoopVertices(r.triangles);
+    ASSERT_EQ(loops.size(), 1u);
+    if (reversed)
+      for (Triangle& t : r.triangles) std::swap(t[1], t[2]);
+    const double before = std::abs(cappedSignedVolume(r.vertices, r.triangles));
+    ASSERT_LT(before, 0.98 * input) << "a coarse remesh should lose volume, else this test shows nothing";
+    const std::vector<Vec3> remeshed = r.vertices;
+    const double d = restoreCappedVolume(r.vertices, r.triangles, reversed ? -input : input);
+    EXPECT_NEAR(std::abs(cappedSignedVolume(r.vertices, r.triangles)), input, 1e-6 * input) << reversed;
+    EXPECT_GT(d, 0) << reversed;  // outward, whichever way the triangles face
+    EXPECT_LT(d, 0.05) << reversed;
+    // The rim stays, its neighbours move half the distance, the rest all of it.
+    std::vector<int> hops(r.vertices.size(), 2);
+    for (Index v : loops[0]) hops[v] = 0;
+    for (const Triangle& t : r.triangles)
+      for (Index a : t)
+        for (Index b : t)
+          if (hops[b] == 0 && hops[a] != 0) hops[a] = 1;
+    for (std::size_t v = 0; v < r.vertices.size(); ++v)
+      EXPECT_NEAR((r.vertices[v] - remeshed[v]).cast<double>().norm(), 0.5 * hops[v] * d, 1e-5) << v;
+  }
+}
+
 }  // namespace
 }  // namespace hs::pbd
 
