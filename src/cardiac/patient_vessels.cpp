@@ -131,7 +131,10 @@ void attachPatientVessels(LvModel& model, const PatientVesselSizes& sizes) {
     throw std::invalid_argument("the vessels on the mitral and aortic annuli would overlap: their axes are " +
                                 mm(double(apart.norm())) + " apart, expected at least " + mm(double(needed)) +
                                 " (the two orifices' radii and a vessel wall)");
-  path.cavity = midWallCavity(model, sizes.edge);
+  // Columns (and cubes) of half an edge: a particle in a cube no triangle's box reaches is
+  // answered at once, and at half an edge most of the cavity's blood is (the meter asks for
+  // every particle every step: 0.24 -> 0.12 ms a step on the coarse wall, the same answers).
+  path.cavity = midWallCavity(model, Real(0.5) * sizes.edge);
   path.mitralValveDisc = valveDisc(model, model.mitralRing, path.mitral, -1);
   path.aorticValveDisc = valveDisc(model, model.aorticRing, path.aortic, +1);
   const Real inflowTop = addVessel(model, model.mitralRing, path.mitral, sizes.inflowLength, sizes, Region::InflowVessel);
