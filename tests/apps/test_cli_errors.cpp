@@ -64,6 +64,13 @@ TEST(CliErrors, UnknownBenchCase) {
   expectBadInput(runHeartsim("bench --case no-such-case --json", dir), {"no-such-case"});
 }
 
+TEST(CliErrors, BenchOfABadOrMissingScenarioFile) {
+  const auto dir = scratchDir("bench_bad_file");
+  writeFile(dir / "bad.toml", "[blood]\nparticles = \"many\"\n");
+  expectBadInput(runHeartsim("bench --scenario bad.toml --seconds 0.1", dir), {"bad.toml", "blood.particles"});
+  expectBadInput(runHeartsim("bench --scenario nowhere.toml --seconds 0.1", dir), {"nowhere.toml"});
+}
+
 TEST(CliErrors, OutOfRangeBeatingVertex) {
   const auto dir = scratchDir("vertex");
   expectBadInput(runHeartsim("run heart-only --set 'cycle.vertices=[999999]' --json", dir), {"cycle.vertices", "999999"});
