@@ -190,11 +190,18 @@ void ParticleTetCollider::rebuild(const std::vector<Vec3>& positions, Real paddi
   // compare per vertex against a build over every tet).
   const auto begin = positions.begin() + std::ptrdiff_t(m_firstVertex);
   const auto end = positions.begin() + std::ptrdiff_t(std::min<std::size_t>(m_vertexEnd, positions.size()));
-  if (m_builtValid && padding == m_builtPadding && std::size_t(end - begin) == m_built.size() &&
-      std::equal(begin, end, m_built.begin(), [](const Vec3& a, const Vec3& b) {
-        return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
-      }))
-    return;
+  const bool sameSolid = m_builtValid && padding == m_builtPadding && std::size_t(end - begin) == m_built.size();
+  std::size_t moved = sameSolid ? 0 : m_built.size();
+  if (sameSolid)
+    for (auto v = begin; v != end; ++v) {
+      const Vec3& b = m_built[std::size_t(v - begin)];
+      moved += v->x() == b.x() && v->y() == b.y() && v->z() == b.z() ? 0 : 1;
+    }
+  if (sameSolid && moved == 0) return;
+  // A few vertices moved (the wall's free vertices by its constraints, the rest held by a
+  // recording): the grid's cells may still hold every box (TetGrid::refit). When most of the
+  // solid moved (a new step's predictions) a refit would rarely hold and is not tried.
+  const bool refittable = sameSolid && 2 * moved <= m_built.size();
   m_built.assign(begin, end);
   m_builtPadding = padding;
   m_builtValid = true;
@@ -218,6 +225,7 @@ void ParticleTetCollider::rebuild(const std::vector<Vec3>& positions, Real paddi
   // candidates.)
   grid.cellSizeFactor = Real(0.5);
   m_grid.setSettings(grid);
+  if (refittable && m_grid.refit(positions, m_tets)) return;
   m_grid.build(positions, m_tets);
 }
 

@@ -117,6 +117,10 @@ void TetGrid::build(const std::vector<Vec3>& vertices, const std::vector<Tet>& t
     if (m_cells.cellRange(m_lo[t], m_hi[t], r)) m_cells.forEachCell(r, [&emit](std::size_t cell, auto...) { emit(cell); });
   }, kCellsPerTet);
   if (!fits) throw std::length_error("TetGrid: too many entries");
+  copyEntryBoxes();
+}
+
+void TetGrid::copyEntryBoxes() {
   const std::vector<Index>& items = m_grid.items();
   m_entryBoxes.resize(items.size());
   const auto entries = std::ptrdiff_t(items.size());
@@ -130,6 +134,49 @@ void TetGrid::build(const std::vector<Vec3>& vertices, const std::vector<Tet>& t
     }
     b.tet = t;
   }
+}
+
+bool TetGrid::refit(const std::vector<Vec3>& vertices, const std::vector<Tet>& tets) {
+  const std::size_t n = tets.size();
+  if (n != m_lo.size() || m_grid.entryCount() == 0) return false;
+  m_refitLo.resize(n);
+  m_refitHi.resize(n);
+  const Vec3 pad = Vec3::Constant(m_settings.padding);
+  // The cells of a box strictly inside the grid (no clamping): those it was entered in must be
+  // the same, and a box poking out of the grid would lose the points beyond it.
+  auto cellsOf = [this](const Vec3& lo, const Vec3& hi, CellBox& r) {
+    for (int a = 0; a < 3; ++a) {
+      const double tl = m_cells.axisCoord(double(lo[a]), a), th = m_cells.axisCoord(double(hi[a]), a);
+      if (!(tl >= 0 && tl <= th && th < double(m_cells.dims[std::size_t(a)]))) return false;
+      r.lo[a] = std::int64_t(tl);
+      r.hi[a] = std::int64_t(th);
+    }
+    return true;
+  };
+  const auto count = std::ptrdiff_t(n);
+  int moved = 0;
+#pragma omp parallel for schedule(static) num_threads(m_settings.threads) reduction(+ : moved) if (n >= kParallelBoxes)
+  for (std::ptrdiff_t k = 0; k < count; ++k) {
+    const auto t = std::size_t(k);
+    Vec3 a = vertices[tets[t][0]], b = a;
+    for (std::size_t j = 1; j < 4; ++j) {
+      a = a.cwiseMin(vertices[tets[t][j]]);
+      b = b.cwiseMax(vertices[tets[t][j]]);
+    }
+    a -= pad;
+    b += pad;
+    CellBox before, after;
+    const bool same = cellsOf(m_lo[t], m_hi[t], before) && cellsOf(a, b, after) &&
+                      std::equal(before.lo, before.lo + 3, after.lo) && std::equal(before.hi, before.hi + 3, after.hi);
+    moved += same ? 0 : 1;
+    m_refitLo[t] = a;
+    m_refitHi[t] = b;
+  }
+  if (moved > 0) return false;
+  m_lo.swap(m_refitLo);
+  m_hi.swap(m_refitHi);
+  copyEntryBoxes();
+  return true;
 }
 
 void TetGrid::candidates(const Vec3& p, std::vector<Index>& out) const {

@@ -49,6 +49,14 @@ class TetGrid {
   // are left out (never candidates). Queries see the geometry as of this call.
   void build(const std::vector<Vec3>& vertices, const std::vector<Tet>& tets);
 
+  // Moves the boxes to `vertices` without binning again when every tet's padded box still
+  // covers exactly the cells it was entered in and stays inside the grid. The queries then give
+  // what a fresh build would (the tets whose box contains the point, in index order: the cells
+  // only narrow the search), for the cost of copying the boxes. Returns false, changing
+  // nothing, when a box left its cells or a vertex is not finite: build() then. A wall whose
+  // constraints moved a few of its vertices by a fraction of a cell refits.
+  [[nodiscard]] bool refit(const std::vector<Vec3>& vertices, const std::vector<Tet>& tets);
+
   // Calls f(tet) once for every tet whose padded bounding box contains p (boundary included),
   // in increasing tet index. Points outside the grid, and non-finite ones, have no candidates.
   template <class F>
@@ -94,6 +102,8 @@ class TetGrid {
 
   // Fills m_lo, m_hi with the padded bounding boxes of the tets.
   BoxStats computeBoxes(const std::vector<Vec3>& vertices, const std::vector<Tet>& tets);
+  // Copies each entry's tet box (m_lo, m_hi) into m_entryBoxes.
+  void copyEntryBoxes();
   // Sets m_cells and m_cellSize from the boxes; returns the cell count.
   std::size_t sizeCells(const BoxStats& boxes, std::size_t tetCount);
 
@@ -112,6 +122,7 @@ class TetGrid {
   Real m_cellSize = 0;
   CellIndexing m_cells;
   std::vector<Vec3> m_lo, m_hi;                 // padded bounding box of each tet (empty box if non-finite)
+  std::vector<Vec3> m_refitLo, m_refitHi;       // refit()'s new boxes before they are accepted
   std::vector<EntryBox> m_entryBoxes;           // per grid entry: its tet and that tet's box
   CellGrid m_grid;                              // tet ids by cell; ascending within a cell
   std::size_t m_reservedFor = ~std::size_t(0);  // tet count m_grid was reserved for

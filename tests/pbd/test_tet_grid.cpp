@@ -1,7 +1,7 @@
 // TetGrid against brute force (every tet whose bounding box contains the point): jittered box
 // meshes and random tet soups, points inside, on box boundaries, outside the grid and far away,
-// padding, a stretched mesh (cell cap), non-finite vertices, buffer reuse across rebuilds and
-// concurrent queries.
+// padding, a stretched mesh (cell cap), non-finite vertices, buffer reuse across rebuilds, a
+// refit after a small move and concurrent queries.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -113,6 +113,39 @@ TEST(TetGrid, CandidatesMatchBruteForce) {
   coarse.cellSizeFactor = Real(3.5);
   expectMatchesBruteForce(box, coarse, 3000, "jittered box, coarse cells");
   expectMatchesBruteForce(tetSoup(400, 2), {}, 3000, "tet soup");
+}
+
+// A few vertices nudged by three paddings: the grid refits (its cells still hold every box) and answers
+// as brute force on the moved mesh; a vertex moved across cells (or out of the grid) is refused
+// and the grid still answers for the mesh it was built on.
+TEST(TetGrid, RefitAfterASmallMoveMatchesBruteForceAndALargeOneIsRefused) {
+  const TetMesh built = jitteredBox(5, Real(0.01), 3, Vec3(Real(0.1), Real(-0.2), Real(0.05)));
+  TetGridSettings s;
+  s.padding = Real(1e-5);
+  s.cellSizeFactor = Real(0.5);
+  TetGrid grid(s);
+  grid.build(built.vertices, built.tets);
+  TetMesh nudged = built;
+  for (std::size_t v = 0; v < nudged.vertices.size(); v += 37) nudged.vertices[v] += Vec3::Constant(Real(3e-5));
+  ASSERT_TRUE(grid.refit(nudged.vertices, nudged.tets));
+  std::vector<Index> got;
+  std::size_t differ = 0;  // points whose answer the nudge changed: the refit must see it
+  for (const Vec3& p : queryPoints(nudged, 2000, 5)) {
+    grid.candidates(p, got);
+    ASSERT_EQ(got, bruteForceCandidates(nudged, p, s.padding)) << p.transpose();
+    differ += got != bruteForceCandidates(built, p, s.padding);
+  }
+  EXPECT_GT(differ, 0u);  // the vertices themselves sit on the boxes' moved faces
+  TetMesh far = nudged;
+  far.vertices[0] += Vec3::Constant(Real(0.5));  // out of every cell it was in, and out of the grid
+  EXPECT_FALSE(grid.refit(far.vertices, far.tets));
+  for (const Vec3& p : queryPoints(nudged, 500, 6)) {
+    grid.candidates(p, got);
+    ASSERT_EQ(got, bruteForceCandidates(nudged, p, s.padding)) << p.transpose();
+  }
+  TetMesh other = built;
+  other.tets.pop_back();
+  EXPECT_FALSE(grid.refit(other.vertices, other.tets));  // a different mesh: build() it
 }
 
 TEST(TetGrid, CellSizeIsTheMeanBoxExtent) {
