@@ -310,7 +310,8 @@ RemeshedSurface remeshIsotropic(const std::vector<Vec3>& vertices, const std::ve
 }
 
 double restoreCappedVolume(std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles, double targetVolume) {
-  const double sign = cappedSignedVolume(vertices, triangles) < 0 ? -1.0 : 1.0;  // triangles facing in or out
+  const double restVolume = cappedSignedVolume(vertices, triangles);
+  const double sign = restVolume < 0 ? -1.0 : 1.0;  // triangles facing in or out
   const double target = std::abs(targetVolume);
   // Each vertex's share of the distance: 0 on a loop, 1/2 next to one (so that the rim's
   // triangles do not tilt by the whole step at once), 1 beyond.
@@ -330,7 +331,7 @@ double restoreCappedVolume(std::vector<Vec3>& vertices, const std::vector<Triang
     for (std::size_t v = 0; v < vertices.size(); ++v) vertices[v] = (rest[v].cast<double>() + d * outward[v]).cast<Real>();
     return std::abs(cappedSignedVolume(vertices, triangles));
   };
-  double d0 = 0, v0 = volumeAt(0);
+  double d0 = 0, v0 = std::abs(restVolume);
   if (!(target > 0) || std::abs(v0 - target) <= 1e-9 * target) return 0;
   // First guess: the missing volume spread over the surface, dV/dd ~ area.
   double area = 0;
@@ -342,8 +343,7 @@ double restoreCappedVolume(std::vector<Vec3>& vertices, const std::vector<Triang
     d0 = d1, v0 = v1;
     d1 = d2, v1 = volumeAt(d1);
   }
-  volumeAt(d1);
-  return d1;
+  return d1;  // the vertices are where the last volumeAt put them
 }
 
 EdgeLengthStats edgeLengthStats(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles) {

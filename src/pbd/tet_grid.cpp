@@ -29,6 +29,22 @@ constexpr std::size_t kBoxChunks = 8;
 // Below this many tets the boxes are computed on one thread.
 constexpr std::size_t kParallelBoxes = 1024;
 
+// The box of tet t over `vertices` grown by pad on every side; false if a corner is not finite
+// (cwiseMin/Max may silently drop a NaN, so the corners are checked themselves).
+bool paddedBox(const std::vector<Vec3>& vertices, const Tet& t, const Vec3& pad, Vec3& lo, Vec3& hi) {
+  lo = hi = vertices[t[0]];
+  bool allFinite = lo.allFinite();
+  for (std::size_t k = 1; k < 4; ++k) {
+    const Vec3& v = vertices[t[k]];
+    allFinite = allFinite && v.allFinite();
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  lo -= pad;
+  hi += pad;
+  return allFinite && lo.allFinite() && hi.allFinite();
+}
+
 }  // namespace
 
 TetGrid::BoxStats TetGrid::computeBoxes(const std::vector<Vec3>& vertices, const std::vector<Tet>& tets) {
@@ -45,17 +61,8 @@ TetGrid::BoxStats TetGrid::computeBoxes(const std::vector<Vec3>& vertices, const
     BoxStats& s = chunks[std::size_t(chunk)];
     for (std::size_t t = n * std::size_t(chunk) / kBoxChunks, end = n * std::size_t(chunk + 1) / kBoxChunks; t < end;
          ++t) {
-      Vec3 a = vertices[tets[t][0]], b = a;
-      bool allFinite = a.allFinite();
-      for (std::size_t k = 1; k < 4; ++k) {
-        const Vec3& v = vertices[tets[t][k]];
-        allFinite = allFinite && v.allFinite();  // cwiseMin/Max may silently drop a NaN
-        a = a.cwiseMin(v);
-        b = b.cwiseMax(v);
-      }
-      a -= pad;
-      b += pad;
-      if (!allFinite || !a.allFinite() || !b.allFinite()) {
+      Vec3 a, b;
+      if (!paddedBox(vertices, tets[t], pad, a, b)) {
         // An empty box (lo > hi) contains nothing; such a tet is entered in no cell.
         m_lo[t] = Vec3::Constant(std::numeric_limits<Real>::max());
         m_hi[t] = Vec3::Constant(std::numeric_limits<Real>::lowest());
@@ -158,15 +165,9 @@ bool TetGrid::refit(const std::vector<Vec3>& vertices, const std::vector<Tet>& t
 #pragma omp parallel for schedule(static) num_threads(m_settings.threads) reduction(+ : moved) if (n >= kParallelBoxes)
   for (std::ptrdiff_t k = 0; k < count; ++k) {
     const auto t = std::size_t(k);
-    Vec3 a = vertices[tets[t][0]], b = a;
-    for (std::size_t j = 1; j < 4; ++j) {
-      a = a.cwiseMin(vertices[tets[t][j]]);
-      b = b.cwiseMax(vertices[tets[t][j]]);
-    }
-    a -= pad;
-    b += pad;
+    Vec3 a, b;
     CellBox before, after;
-    const bool same = cellsOf(m_lo[t], m_hi[t], before) && cellsOf(a, b, after) &&
+    const bool same = paddedBox(vertices, tets[t], pad, a, b) && cellsOf(m_lo[t], m_hi[t], before) && cellsOf(a, b, after) &&
                       std::equal(before.lo, before.lo + 3, after.lo) && std::equal(before.hi, before.hi + 3, after.hi);
     moved += same ? 0 : 1;
     m_refitLo[t] = a;
