@@ -50,12 +50,22 @@ struct LvGeometryParams {
 
 // The mesh is a shell one tet thick: vertices come in pairs, 2i on the cavity / lumen side
 // (inner layer) and 2i+1 its partner on the outer side, and every vertex lies on the surface.
+// A vertex of a patient's vessel and the annulus vertex it rises from (patient_vessels.h): a
+// motion that moves the annulus carries it by `share` of the annulus vertex's displacement, 1 at
+// the ring and 0 at the pinned far end, as the procedural vessels descend less toward theirs.
+struct VesselFollower {
+  Index vertex;
+  Index root;
+  Real share;
+};
+
 struct LvModel {
   pbd::TetMesh mesh;
   std::vector<pbd::Triangle> surface;  // boundary faces, outward oriented
   std::vector<Region> region;          // per vertex
   std::vector<std::uint8_t> segment;   // per vertex: AHA segment 1..17, 0 if not myocardium
   std::vector<Index> pinned;           // vertices held fixed: the far rings of both vessels
+  std::vector<VesselFollower> vesselFollowers;  // a patient's vessels below their far rings
   // The cavity: endocardial triangles (cup and base plate underside) oriented with normals
   // pointing out of the cavity (into the wall), plus the rings of the two orifices at the
   // base plate's cavity side, ordered so that a fan from the ring's centroid closes the cavity

@@ -85,7 +85,14 @@ Real addVessel(LvModel& model, const std::vector<Index>& ring, const Orifice& or
                tets);
     }
   }
-  for (std::size_t j = 0; j < n; ++j) model.pinned.insert(model.pinned.end(), {inner(layers, j), outer(layers, j)});
+  for (std::size_t j = 0; j < n; ++j) {
+    model.pinned.insert(model.pinned.end(), {inner(layers, j), outer(layers, j)});
+    for (int k = 1; k < layers; ++k) {
+      const Real share = Real(1) - Real(k) / Real(layers);
+      model.vesselFollowers.push_back({inner(k, j), ring[j], share});
+      model.vesselFollowers.push_back({outer(k, j), ring[j], share});
+    }
+  }
   return Real(centre.y() + double(layers) * h);
 }
 

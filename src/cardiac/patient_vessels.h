@@ -27,6 +27,7 @@ struct PatientVesselSizes {
 };
 
 // Appends both vessels to `model` (a patient's, lvModelFromPatientWall), pins their far rings,
+// lists their other vertices in model.vesselFollowers (layer k of K on ring vertex j: share 1 - k/K),
 // labels their vertices Region::InflowVessel / OutflowVessel, recomputes model.surface and sets
 // the flow path (far ends, valve discs, the patient cavity) and model.params' vessel sizes.
 // std::invalid_argument with a one-line reason when the vessels would overlap each other or a

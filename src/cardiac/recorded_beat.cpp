@@ -168,8 +168,13 @@ RecordedBeat::RecordedBeat(const LvModel& model, const PatientWall& wall, const 
     patch.restRadius = widening > 1 + 1e-6 ? patch.restThickness / (widening - 1) : 0.0;
     m_epicardium.push_back(patch);
   }
+  std::vector<std::uint8_t> driven(n, 0);
+  for (Index vertex : m_endocardial) driven[vertex] = 1;
+  for (const VesselFollower& f : model.vesselFollowers)
+    if (driven[f.root]) m_vessels.push_back(f);
   m_driven = m_endocardial;
   for (const EpicardialPatch& patch : m_epicardium) m_driven.push_back(patch.vertex);
+  for (const VesselFollower& f : m_vessels) m_driven.push_back(f.vertex);
   m_normal.resize(n);
   m_area.resize(n);
 }
@@ -192,6 +197,12 @@ void RecordedBeat::placeEpicardium(std::vector<Vec3>& predicted) const {
   }
 }
 
+void RecordedBeat::carryVessels(std::vector<Vec3>& predicted) const {
+  const std::vector<Vec3>& rest = m_model->mesh.vertices;
+  const auto at = [&](Index v) -> Vec3& { return predicted[m_firstParticle + v]; };
+  for (const VesselFollower& f : m_vessels) at(f.vertex) = rest[f.vertex] + f.share * (at(f.root) - rest[f.root]);
+}
+
 void RecordedBeat::drive(double time, std::vector<Vec3>& predicted) const {
   const SplineWeights s = periodicCatmullRom(time, m_period, frameCount());
   for (std::size_t k = 0; k < m_endocardial.size(); ++k) {
@@ -200,6 +211,7 @@ void RecordedBeat::drive(double time, std::vector<Vec3>& predicted) const {
     predicted[m_firstParticle + m_endocardial[k]] = x.cast<Real>();
   }
   placeEpicardium(predicted);
+  carryVessels(predicted);
 }
 
 double RecordedBeat::recordedVolume(double time) const {

@@ -12,6 +12,7 @@
 #include "cardiac/patient_vessels.h"
 #include "io/scenario_file.h"
 #include "pbd/tet_geometry.h"
+#include "recorded_beat_frames.h"
 #include "thrown_message.h"
 
 namespace hs::io {
@@ -135,6 +136,38 @@ TEST_P(PatientBlood, TheCavityTestSeesTheVentricleAndNotTheRoomAroundIt) {
 
 INSTANTIATE_TEST_SUITE_P(BuiltIn, PatientBlood, ::testing::Values("patient-biv-me", "idealized-lv"),
                          [](const ::testing::TestParamInfo<std::string>& p) { return p.param == "idealized-lv" ? "IdealizedLv" : "PatientBivme"; });
+
+// A recorded beat (recorded_beat.h) carries the vessels on its annuli as the procedural heart
+// carries its own: each vessel vertex by its share of its ring vertex's displacement, 1 at the
+// ring, 0 at the pinned far end: no vessel vertex is left to the constraints.
+TEST(PatientBloodVessels, ARecordedBeatCarriesTheVesselsByTheirRings) {
+  cardiac::Scenario s = loadScenario("patient-biv-me");
+  s.motion.frames = "frame_{frame:03d}.obj";
+  s.motion.count = 25;
+  s.motion.period = Real(0.8);
+  s.motion.frameSurfaces = hs::testing::scaledFrames(s.patient.endocardiumSurface, 25, 0.3, 0.36);
+  cardiac::HeartSimulation sim(s, 1);
+  const LvModel& m = sim.model();
+  ASSERT_FALSE(m.vesselFollowers.empty());
+  for (std::size_t v = 0; v < m.mesh.vertices.size(); ++v) {
+    if (m.region[v] == Region::Myocardium) continue;
+    ASSERT_EQ(sim.particles().inverseMass[v], 0) << "vessel vertex " << v << " is left to the constraints";
+  }
+  for (int k = 0; k < 200; ++k) sim.step();  // 0.2 s, late systole: the annuli have moved
+  const std::vector<Vec3>& x = sim.particles().position;
+  const std::vector<Vec3>& rest = m.mesh.vertices;
+  Real ringTravel = 0;
+  for (const cardiac::VesselFollower& f : m.vesselFollowers) {
+    EXPECT_GT(f.share, 0);
+    EXPECT_LT(f.share, 1);
+    ringTravel = std::max(ringTravel, (x[f.root] - rest[f.root]).norm());
+    const Vec3 expected = rest[f.vertex] + f.share * (x[f.root] - rest[f.root]);
+    EXPECT_LT((x[f.vertex] - expected).norm(), Real(1e-6)) << "vessel vertex " << f.vertex;
+  }
+  EXPECT_GT(ringTravel, Real(0.001));  // the annuli moved by more than a millimetre
+  for (Index v : m.pinned) EXPECT_EQ(x[v], rest[v]) << "pinned vertex " << v;
+  EXPECT_EQ(sim.tissueStats().invertedTets, 0u);
+}
 
 TEST(PatientBloodVessels, AnnuliTooCloseForTwoVesselsAreRefusedWithTheirDistance) {
   const cardiac::Scenario s = loadScenario("idealized-lv", {"blood.enabled=false"});
