@@ -48,8 +48,6 @@ struct LvGeometryParams {
   Real resolution = Real(1.0);
 };
 
-// The mesh is a shell one tet thick: vertices come in pairs, 2i on the cavity / lumen side
-// (inner layer) and 2i+1 its partner on the outer side, and every vertex lies on the surface.
 // A vertex of a patient's vessel and the annulus vertex it rises from (patient_vessels.h): a
 // motion that moves the annulus carries it by `share` of the annulus vertex's displacement, 1 at
 // the ring and 0 at the pinned far end, as the procedural vessels descend less toward theirs.
@@ -59,6 +57,8 @@ struct VesselFollower {
   Real share;
 };
 
+// The mesh is a shell one tet thick: vertices come in pairs, 2i on the cavity / lumen side
+// (inner layer) and 2i+1 its partner on the outer side, and every vertex lies on the surface.
 struct LvModel {
   pbd::TetMesh mesh;
   std::vector<pbd::Triangle> surface;  // boundary faces, outward oriented
