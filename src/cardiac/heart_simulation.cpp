@@ -295,6 +295,10 @@ void HeartSimulation::reorderBlood() {
 
 // One step, stage by stage (docs/architecture.md). Each stage is a named call; the engine's
 // stages (pbd::) know nothing of hearts, the cardiac ones call into the engine.
+// The wall's constraints come before the blood: the density solve never moves the wall (its
+// contact is one-way; two-way pushes come in the contacts), so the wall ends the step where they
+// leave it either way, and the blood's iterations see it there, not where the cycle alone put
+// it. The contacts then find the wall as the iterations did, with no second grid to build.
 void HeartSimulation::step() {
   const pbd::StepContext context =
       pbd::makeStepContext(m_scenario.simulation.dt, m_scenario.simulation.gravity, m_threads, m_steps);
@@ -306,9 +310,9 @@ void HeartSimulation::step() {
   laps.lap(StepStage::Forces);
   moveWall(context);                                                        // cardiac cycle, vessels' ends
   laps.lap(StepStage::MoveWall);
-  solveBloodDensity(context, laps);                                         // PBF, valves and wall inside
   pbd::projectConstraints(m_constraints, m_particles, m_solver, context);   // the wall's own constraints
   laps.lap(StepStage::WallConstraints);
+  solveBloodDensity(context, laps);                                         // PBF, valves and wall inside
   resolveBloodContacts(context);                                            // valves, wall push-out
   laps.lap(StepStage::Contacts);
   pbd::updateVelocities(m_particles, m_solver, context);                    // v = (p - x)/dt, x = p

@@ -14,11 +14,11 @@ enum class StepStage : std::size_t {
   Begin,            // reorder, lumped circulation, valves, flow meter
   Forces,           // filling pressure, gravity; p = x + dt v
   MoveWall,         // cardiac cycle or driven wall, vessels' ends
+  WallConstraints,  // the wall's own PBD constraints
   Neighbours,       // the blood's cell grid and neighbour lists
   WallLending,      // nearest wall of each blood particle (wall density)
   DensityKernels,   // lambdas and corrections, all iterations
   WallInIterations, // valves, wall push-out and vessels' ends inside the iterations
-  WallConstraints,  // the wall's own PBD constraints
   Contacts,         // valves and wall push-out after the wall has moved
   Velocities,       // v = (p - x)/dt; viscosity, XSPH
   End,              // flows, the closed loop
@@ -26,8 +26,8 @@ enum class StepStage : std::size_t {
 };
 
 constexpr std::array<std::string_view, std::size_t(StepStage::Count)> kStepStageNames{
-    "begin",   "forces",  "move_wall", "neighbours", "wall_lending", "density_kernels", "wall_in_iterations",
-    "wall_constraints", "contacts", "velocities", "end"};
+    "begin",           "forces",             "move_wall", "wall_constraints", "neighbours", "wall_lending",
+    "density_kernels", "wall_in_iterations", "contacts",  "velocities",       "end"};
 
 struct StepProfile {
   std::array<double, std::size_t(StepStage::Count)> seconds{};

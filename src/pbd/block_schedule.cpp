@@ -104,6 +104,7 @@ std::vector<Index> greedyColouring(const std::vector<std::vector<Index>>& adjace
 
 BlockSchedule buildBlockSchedule(ConstraintSet& constraints, const std::vector<Vec3>& positions) {
   BlockSchedule schedule;
+  constraints.movableListedFor.clear();  // the constraints are sorted anew: their lists too
   // Regions: the particles split into a fixed number of spatial parts, independent of the
   // thread count (so the result is too). A constraint inside one region belongs to that
   // region's block; a constraint across regions belongs to the seam block of the regions it

@@ -40,6 +40,9 @@ struct ConstraintSet {
   BlockSchedule schedule;
   std::vector<Plane> planes;
   Real collisionRadius = 0;  // particle radius used against planes
+  // The inverse masses the groups' movable lists were made for: the lists are made again only
+  // when these change (a wall made kinematic, a vertex pinned) or the schedule is rebuilt.
+  std::vector<Real> movableListedFor;
 };
 
 // Parked particles (Particles::state) are left alone by every stage; pinned ones (w = 0) feel
