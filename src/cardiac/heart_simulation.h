@@ -122,6 +122,7 @@ class HeartSimulation {
   void advanceLumpedCirculation(const pbd::StepContext& context);
   void applyExternalForces(const pbd::StepContext& context);
   void moveWall(const pbd::StepContext& context);
+  void projectWall(const pbd::StepContext& context, StageLaps& laps);  // before the blood one-way, after two-way
   void solveBloodDensity(const pbd::StepContext& context, StageLaps& laps);
   void lendWallDensity(const pbd::StepContext& context);
   void resolveBloodContacts(const pbd::StepContext& context);

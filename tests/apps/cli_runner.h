@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace hs::testing {
 
@@ -39,6 +40,26 @@ inline CliResult runHeartsim(const std::string& args, const std::filesystem::pat
   r.out = readFile(outFile);
   r.err = readFile(errFile);
   return r;
+}
+
+// One column of a CSV file with a header row (metrics.csv), as numbers; empty when the column
+// is missing.
+inline std::vector<double> csvColumn(const std::filesystem::path& file, const std::string& name) {
+  std::istringstream csv(readFile(file));
+  std::string line, field;
+  std::getline(csv, line);
+  std::istringstream header(line);
+  int index = -1;
+  for (int k = 0; std::getline(header, field, ','); ++k)
+    if (field == name) index = k;
+  std::vector<double> values;
+  if (index < 0) return values;
+  while (std::getline(csv, line)) {
+    std::istringstream row(line);
+    for (int k = 0; std::getline(row, field, ','); ++k)
+      if (k == index) values.push_back(std::stod(field));
+  }
+  return values;
 }
 
 inline std::filesystem::path scratchDir(const std::string& name) {
