@@ -17,7 +17,8 @@ struct ConstraintGroup {
   Real compliance = 0;                    // alpha (XPBD); 0 = plain PBD
   Real stiffness = 1;                     // k in [0, 1]
   // Scratch of a projection: the constraints that can move a particle (some w > 0), block by
-  // block in the stored order, found once a step so that the iterations skip the rest unread.
+  // block in the stored order, found again when the inverse masses change
+  // (ConstraintSet::movableListedFor) so that the iterations skip the rest unread.
   std::vector<Index> movable;
   std::vector<std::size_t> movableStart{0};
 
