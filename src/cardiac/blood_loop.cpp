@@ -7,7 +7,9 @@ namespace hs::cardiac {
 
 BloodLoop::BloodLoop(const FlowPath& path, const BloodSettings& blood, int inletLayers)
     : m_path(path), m_spacing(blood.spacing), m_radius(blood.radius), m_inletLayers(std::max(1, inletLayers)) {
-  const Orifice& mitral = path.mitral;
+  // The inflow's far end: where the lumen's axis ends (the mitral orifice's own for a straight
+  // vessel).
+  const Orifice mitral = path.inflowEnd();
   const Real reach = mitral.radius - blood.radius;
   if (m_inletLayers == 1) {
     // One square lattice of spacing d across the inflow lumen, half a spacing below its far
@@ -31,7 +33,7 @@ BloodLoop::BloodLoop(const FlowPath& path, const BloodSettings& blood, int inlet
     m_inletSites.push_back(Vec3(mitral.centre.x(), path.inflowTop - Real(0.5) * m_spacing, mitral.centre.z()));
   // Parked particles wait above the vessels, between them, more than a kernel support apart
   // (so they are nobody's neighbours).
-  m_parkingOrigin = Vec3(Real(0.5) * (mitral.centre.x() + path.aortic.centre.x()),
+  m_parkingOrigin = Vec3(Real(0.5) * (mitral.centre.x() + path.outflowEnd().centre.x()),
                          std::max(path.inflowTop, path.outflowTop) + 2 * blood.supportRadius, mitral.centre.z());
   m_parkingPitch = Real(1.01) * blood.supportRadius;
 }
@@ -81,7 +83,7 @@ void BloodLoop::meterInlet(Real travel, Real dt) {
 }
 
 std::size_t BloodLoop::enterLayers(pbd::Particles& particles, Index first) {
-  const Orifice& mitral = m_path.mitral;
+  const Orifice mitral = m_path.inflowEnd();
   std::size_t entered = 0;
   bool located = false;
   while (m_inletTravel >= m_spacing && !m_queue.empty()) {
@@ -124,7 +126,7 @@ std::size_t BloodLoop::reenter(pbd::Particles& particles, Index first) {
   if (m_queue.empty()) return 0;
   // Blood near the inflow vessel's far end: the sites must be clear of it, and re-entering
   // particles take its mean velocity (they join the moving column).
-  const Orifice& mitral = m_path.mitral;
+  const Orifice mitral = m_path.inflowEnd();
   const Real near = m_path.inflowTop - Real(m_inletLayers + 1) * m_spacing;
   locateParked(particles, first);
   m_occupied.clear();

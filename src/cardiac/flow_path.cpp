@@ -11,16 +11,18 @@ namespace hs::cardiac {
 FlowRegion FlowPath::classify(const Vec3& x, Real lumenSlack, Real endSlack) const {
   if (!x.allFinite()) return FlowRegion::Outside;
   // Within a vessel's lumen (and a slack of its wall) and below its far end (and a slack).
-  auto inLumen = [&](const Orifice& o, Real top) { return o.radial(x) < o.radius + lumenSlack && x.y() <= top + endSlack; };
+  auto inLumen = [&](const Orifice& section, Real top) {
+    return section.radial(x) < section.radius + lumenSlack && x.y() <= top + endSlack;
+  };
   if (cavity) {
-    if (x.y() >= mitral.centre.y() && inLumen(mitral, inflowTop)) return FlowRegion::InflowVessel;
-    if (x.y() >= aortic.centre.y() && inLumen(aortic, outflowTop)) return FlowRegion::OutflowVessel;
+    if (x.y() >= mitral.centre.y() && inLumen(inflowSection(x.y()), inflowTop)) return FlowRegion::InflowVessel;
+    if (x.y() >= aortic.centre.y() && inLumen(outflowSection(x.y()), outflowTop)) return FlowRegion::OutflowVessel;
     return cavity->contains(x) ? FlowRegion::Ventricle : FlowRegion::Outside;
   }
   // The valve planes are the regions' borders, as for the flows (flow_meter.h).
   if (x.y() >= mitral.centre.y()) {
-    if (inLumen(mitral, inflowTop)) return FlowRegion::InflowVessel;
-    if (inLumen(aortic, outflowTop)) return FlowRegion::OutflowVessel;
+    if (inLumen(inflowSection(x.y()), inflowTop)) return FlowRegion::InflowVessel;
+    if (inLumen(outflowSection(x.y()), outflowTop)) return FlowRegion::OutflowVessel;
   }
   if (x.y() >= mitral.centre.y() + plateMid) return FlowRegion::Outside;
   // (x^2 + z^2) / a^2 + y^2 / c^2 <= 1 for the mid-wall spheroid, y clamped at the base plane.

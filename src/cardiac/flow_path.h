@@ -2,11 +2,13 @@
 // The blood's path through the LV model, as geometry: inflow vessel -> mitral orifice ->
 // ventricle -> aortic orifice -> outflow vessel. Part of the LV model (LvModel::flowPath),
 // found once on its rest shape; the one place that says which region a point is in.
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
 
+#include "cardiac/vessel_shape.h"
 #include "pbd/types.h"
 
 namespace hs::pbd {
@@ -53,6 +55,9 @@ struct FlowPath {
   // farthest vertex (patient_vessels.h). The valves close these discs and the flow meter counts
   // through them.
   std::optional<Orifice> mitralValveDisc, aorticValveDisc;
+  // The vessels' shapes above their orifices (vessel_shape.h): straight but for an anatomical
+  // procedural heart's atrium, sinuses and lean.
+  VesselShape inflowShape, outflowShape;
   [[nodiscard]] const Orifice& mitralValve() const { return mitralValveDisc ? *mitralValveDisc : mitral; }
   [[nodiscard]] const Orifice& aorticValve() const { return aorticValveDisc ? *aorticValveDisc : aortic; }
 
@@ -74,13 +79,42 @@ struct FlowPath {
       if (*disc) (*disc)->centre.y() -= descent;
     return moved;
   }
+  // The inflow (or outflow) vessel's lumen at height y (clamped to the vessel): the disc whose
+  // vertical axis is the lumen's there and whose radius is the lumen's largest there. The
+  // orifice itself for a straight vessel.
+  [[nodiscard]] Orifice inflowSection(Real y) const { return section(mitral, inflowTop, inflowShape, y); }
+  [[nodiscard]] Orifice outflowSection(Real y) const { return section(aortic, outflowTop, outflowShape, y); }
+  // The share u of a vessel's height at y, from its orifice `o` (0) to its far end `top` (1),
+  // clamped: where its shape is read (vessel_shape.h).
+  [[nodiscard]] static double heightShare(const Orifice& o, Real top, Real y) {
+    return std::clamp(double(y - o.centre.y()) / double(top - o.centre.y()), 0.0, 1.0);
+  }
+  // The vessels' far ends: where blood leaves and the closed loop puts it back.
+  [[nodiscard]] Orifice inflowEnd() const { return inflowSection(inflowTop); }
+  [[nodiscard]] Orifice outflowEnd() const { return outflowSection(outflowTop); }
   // Past the far end of the inflow (or outflow) vessel, within `slack` of its lumen's axis
   // cylinder: blood that has left the model there.
   [[nodiscard]] bool pastInflowEnd(const Vec3& x, Real slack) const {
-    return x.y() > inflowTop && mitral.radial(x) < mitral.radius + slack;
+    const Orifice end = inflowEnd();
+    return x.y() > inflowTop && end.radial(x) < end.radius + slack;
   }
   [[nodiscard]] bool pastOutflowEnd(const Vec3& x, Real slack) const {
-    return x.y() > outflowTop && aortic.radial(x) < aortic.radius + slack;
+    const Orifice end = outflowEnd();
+    return x.y() > outflowTop && end.radial(x) < end.radius + slack;
+  }
+
+ private:
+  // The lumen's section at height y of a vessel rising from orifice `o` to `top` (u = the share
+  // of its height, which a descended base keeps: vessel_shape.h).
+  static Orifice section(const Orifice& o, Real top, const VesselShape& shape, Real y) {
+    if (shape.straight()) return o;
+    const double u = heightShare(o, top, y);
+    const double shift = shape.shift(u);
+    Orifice s = o;
+    s.centre.x() += Real(shift * shape.awayX);
+    s.centre.z() += Real(shift * shape.awayZ);
+    s.radius = Real(shape.maxRadius(u, double(o.radius)));
+    return s;
   }
 };
 

@@ -23,6 +23,37 @@ std::vector<Vec3> lumenColumn(const Orifice& lumen, Real first, Real top, Real r
   return out;
 }
 
+// The sites of a procedural vessel's lumen from `first` up to a particle radius under its far
+// end, a layer a spacing: about the lumen's axis at each height, the disc a straight vessel of the
+// orifice's radius would hold (lumenDiscSites), then rings a spacing apart beyond it, each site
+// kept where it is a particle radius inside the lumen's own radius at its azimuth
+// (vessel_shape.h: the sinuses' lobes, the atrium). A straight vessel's is lumenColumn's.
+std::vector<Vec3> vesselColumn(const FlowPath& path, bool inflow, Real first, Real r, Real d) {
+  const Orifice& orifice = inflow ? path.mitral : path.aortic;
+  const Real top = inflow ? path.inflowTop : path.outflowTop;
+  const VesselShape& shape = inflow ? path.inflowShape : path.outflowShape;
+  if (shape.straight()) return lumenColumn(orifice, first, top, r, d);
+  std::vector<Vec3> out;
+  const Real core = orifice.radius - r;
+  int layer = 0;
+  for (Real y = first; y <= top - r + Real(1e-6) * d; y = first + Real(++layer) * d) {
+    const Orifice section = inflow ? path.inflowSection(y) : path.outflowSection(y);
+    const bool turned = layer % 2 == 1;
+    for (const Vec3& site : lumenDiscSites(section, y, core, d, turned)) out.push_back(site);
+    const double u = FlowPath::heightShare(orifice, top, y);
+    const Vec3 centre(section.centre.x(), y, section.centre.z());
+    for (Real rho = core + d; rho <= section.radius - r + Real(1e-6) * d; rho += d) {
+      const int count = std::max(1, int(std::lround(2 * std::numbers::pi_v<Real> * rho / d)));
+      for (int j = 0; j < count; ++j) {
+        const double theta = 2 * std::numbers::pi * (j + (turned ? 0.5 : 0.0)) / count;
+        if (double(rho) <= shape.radius(u, theta, double(orifice.radius)) - double(r) + 1e-6 * double(d))
+          out.push_back(centre + rho * Vec3(Real(std::cos(theta)), 0, Real(std::sin(theta))));
+      }
+    }
+  }
+  return out;
+}
+
 // A patient's heart (FlowPath::cavity set, patient_vessels.h). Its cavity is no spheroid: the
 // sites are a cubic lattice a spacing apart inside the endocardium closed over both annuli, and
 // each vessel's column starts a particle radius above its own orifice's plane. Every site keeps a
@@ -114,8 +145,8 @@ VesselSites vesselSites(const Scenario& scenario, const LvModel& model) {
     for (std::vector<Vec3>* column : {&sites.inflow, &sites.outflow})
       std::erase_if(*column, [&](const Vec3& p) { return !farFromWall(model, p, r); });
   } else {
-    sites.inflow = lumenColumn(path.mitral, sites.lowest, path.inflowTop, r, d);
-    sites.outflow = lumenColumn(path.aortic, sites.lowest, path.outflowTop, r, d);
+    sites.inflow = vesselColumn(path, true, sites.lowest, r, d);
+    sites.outflow = vesselColumn(path, false, sites.lowest, r, d);
   }
   std::vector<Vec3> full = cavitySites(scenario, model);
   full.insert(full.end(), sites.inflow.begin(), sites.inflow.end());

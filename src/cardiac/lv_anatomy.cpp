@@ -38,12 +38,17 @@ AnatomyFigures measureAnatomy(const LvModel& model) {
 
   // The root: the outflow vessel's lumen side (even ids, lv_model.h) about the vessel's axis,
   // which rises along the flow path's aortic direction from the ring's centroid (a patient's
-  // ring may be tilted against it, patient_vessels.h).
-  const Vec3d axis = model.flowPath.aortic.forward.cast<double>().normalized();
+  // ring may be tilted against it, patient_vessels.h), shifted sideways where an anatomical root
+  // leans (vessel_shape.h): the lumen is measured across, not along its lean.
+  const FlowPath& path = model.flowPath;
+  const Vec3d axis = path.aortic.forward.cast<double>().normalized();
+  const VesselShape& shape = path.outflowShape;
   double rootRadius = -1;
   for (std::size_t v = 0; v < model.mesh.vertices.size(); v += 2) {
     if (model.region[v] != Region::OutflowVessel) continue;
-    const Vec3d d = model.mesh.vertices[v].cast<double>() - aortic.centroid;
+    const Vec3& x = model.mesh.vertices[v];
+    const double lean = shape.shift(FlowPath::heightShare(path.aortic, path.outflowTop, x.y()));
+    const Vec3d d = x.cast<double>() - aortic.centroid - lean * Vec3d(shape.awayX, 0, shape.awayZ);
     rootRadius = std::max(rootRadius, (d - axis.dot(d) * axis).norm());
   }
   if (rootRadius >= 0) f.aorticRootDiameter = 2 * rootRadius;

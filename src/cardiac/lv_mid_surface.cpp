@@ -127,7 +127,9 @@ Ring addVessel(MidSurface& s, const ShellDims& d, const ShellDims::Orifice& o, R
   // Lumen radius R, outer radius R + w. The bottom ring is the orifice edge: inner layer in the
   // base plane y = 0, outer layer on the top of the plate (y = baseThickness). The other rings
   // have both layers at the same height y = baseThickness + length * row / rows, so only the
-  // first row is sheared (a wall sheared along its length makes flat tets).
+  // first row is sheared (a wall sheared along its length makes flat tets). A shaped vessel's
+  // rings stay horizontal; their centres and radii follow its shape at u = y / (baseThickness +
+  // length), the share of its height (vessel_shape.h).
   const double rIn = o.radius;
   const double rOut = o.radius + d.vesselWall;
   const long n = ringCount(0.5 * (rIn + rOut), d.h, rIn, d.plateH);
@@ -135,18 +137,23 @@ Ring addVessel(MidSurface& s, const ShellDims& d, const ShellDims::Orifice& o, R
   // was refined for the base plate).
   const double chord = std::min(d.h, 2 * kPi * 0.5 * (rIn + rOut) / double(n));
   const long rows = std::max(1L, std::lround((0.5 * d.baseThickness + o.length) / (kRowHeight * chord)));
+  const double height = d.baseThickness + o.length;
   Ring bottom;
   Ring previous;
   for (long row = 0; row <= rows; ++row) {
     const double yOut = d.baseThickness + o.length * double(row) / double(rows);
     const double yIn = row == 0 ? 0.0 : yOut;
+    const double u = row == 0 ? 0.0 : yOut / height;
+    const double shift = o.shape.shift(u);
+    const Vec2d centre = o.centre + shift * Vec2d(o.shape.awayX, o.shape.awayZ);
     Ring ring;
     ring.angles = ringAngles(n, static_cast<int>(row));
     for (double phi : ring.angles) {
       const double cx = std::cos(phi);
       const double sz = std::sin(phi);
-      const Vec3d in(o.centre.x() + rIn * cx, yIn, o.centre.y() + rIn * sz);
-      const Vec3d out(o.centre.x() + rOut * cx, yOut, o.centre.y() + rOut * sz);
+      const double r = row == 0 ? rIn : o.shape.radius(u, phi, rIn);
+      const Vec3d in(centre.x() + r * cx, yIn, centre.y() + r * sz);
+      const Vec3d out(centre.x() + (r + d.vesselWall) * cx, yOut, centre.y() + (r + d.vesselWall) * sz);
       const int rank = kRankVesselTop + static_cast<int>(rows - row);
       ring.ids.push_back(s.addVertex(in, out, row == 0 ? Region::BasePlate : o.region, rank));
     }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cardiac/lv_model.h"
+#include "cardiac/vessel_shape.h"
 
 namespace hs::cardiac::detail {
 
@@ -27,6 +28,7 @@ struct ShellDims {
     double radius = 0;
     double length = 0;  // vessel length above the base plate
     Region region = Region::InflowVessel;
+    VesselShape shape;  // straight unless the heart is anatomical
   };
   Orifice mitral;
   Orifice aortic;
@@ -58,8 +60,8 @@ void zipRings(MidSurface& s, const Ring& lower, const Ring& upper, bool bindsCav
 // The half-spheroid cup (apex pole, rings up to the base plane); returns its top ring.
 Ring addCup(MidSurface& s, const ShellDims& d);
 
-// A vertical tube over an orifice; returns its bottom ring (the orifice edge in the base
-// plane) and stores its far ring in `top`.
+// A tube over an orifice, straight or shaped (vessel_shape.h); returns its bottom ring (the
+// orifice edge in the base plane) and stores its far ring in `top`.
 Ring addVessel(MidSurface& s, const ShellDims& d, const ShellDims::Orifice& o, Ring& top);
 
 // The base plate between the cup's top ring (`rim`) and the two orifice rings.

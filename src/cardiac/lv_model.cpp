@@ -9,6 +9,7 @@
 
 #include "cardiac/aha_segments.h"
 #include "cardiac/lv_mid_surface.h"
+#include "cardiac/vessel_shape.h"
 
 namespace hs::cardiac {
 
@@ -44,6 +45,71 @@ std::string fmt(double v) {
 
 [[noreturn]] void fail(const std::string& key, const std::string& what) {
   throw std::invalid_argument("model." + key + ": " + what);
+}
+
+// An anatomical heart's vessels (vessel_shape.h), as shares u of each vessel's height above the
+// orifice, all from kShapeFrom above the plate's top (the mesh's first row is the sheared one):
+// the sinuses of Valsalva over the next 45% of the root, with a commissure (no lobe) toward the
+// mitral side; the atrium to 85% of the inflow; both vessels lean away from each other up to half
+// their height.
+constexpr double kShapeFrom = 0.1;
+constexpr double kSinusShare = 0.45;
+constexpr double kAtriumTo = 0.85;
+constexpr double kLeanTo = 0.5;
+constexpr double kMaxLeanDeg = 40;
+constexpr double kMaxSinusInRadii = 2.5, kMaxAtriumInRadii = 3.0;
+
+enum class VesselKind { Inflow, Outflow };
+
+VesselShape vesselShape(const LvGeometryParams& p, VesselKind kind) {
+  const bool inflow = kind == VesselKind::Inflow;
+  const double height = double(p.baseThickness) + double(inflow ? p.inflowVesselLength : p.outflowVesselLength);
+  const double from = double(p.baseThickness) / height + kShapeFrom;
+  VesselShape s;
+  s.awayX = inflow ? -1 : 1;  // the mitral orifice sits at -x, the aortic at +x
+  s.bendFrom = from;
+  s.bendEnd = std::max(kLeanTo, from + 0.1);
+  // Steepest slope of offset S(t) over (bendEnd - bendFrom) of a height L: 1.5 offset / (...).
+  s.offset = std::tan(double(p.vesselLeanDeg) * std::numbers::pi / 180) * (s.bendEnd - s.bendFrom) * height / 1.5;
+  if (inflow && p.atriumRadius > 0) {
+    s.bulgeRadius = p.atriumRadius;
+    s.bulgeFrom = from;
+    s.bulgeTo = std::max(kAtriumTo, from + 0.1);
+  }
+  if (!inflow && p.aorticSinusRadius > 0) {
+    s.bulgeRadius = p.aorticSinusRadius;
+    s.bulgeFrom = from;
+    s.bulgeTo = from + kSinusShare;
+    s.lobes = 3;
+    s.lobePhase = 0;  // lobes at 0, 120 and 240 degrees: the commissure at 180 faces the mitral side
+  }
+  return s;
+}
+
+// The two vessels' outer walls, level by level above the plate: their axes must stay apart by
+// both largest outer radii and one more wall. Sections are horizontal (vessel_shape.h), so
+// levels that clear each other mean vessels that do.
+void validateVesselClearance(const LvGeometryParams& p) {
+  const double a = double(p.endoRadius), w = double(p.vesselWallThickness);
+  const double rm = double(p.mitralRadius), ra = double(p.aorticRadius);
+  const double gap = (2 * a - 2 * rm - 2 * ra) / 3;
+  const double xm = -a + gap + rm, xa = a - gap - ra;
+  const VesselShape inflow = vesselShape(p, VesselKind::Inflow), outflow = vesselShape(p, VesselKind::Outflow);
+  if (inflow.straight() && outflow.straight()) return;
+  const double bt = double(p.baseThickness);
+  const double topIn = bt + double(p.inflowVesselLength), topOut = bt + double(p.outflowVesselLength);
+  constexpr int kLevels = 400;
+  for (int k = 0; k <= kLevels; ++k) {
+    const double y = bt + (std::min(topIn, topOut) - bt) * k / kLevels;
+    const double uIn = y / topIn, uOut = y / topOut;
+    const double apart = (xa + outflow.shift(uOut)) - (xm - inflow.shift(uIn));
+    const double need = inflow.maxRadius(uIn, rm) + outflow.maxRadius(uOut, ra) + 3 * w;
+    if (apart < need)
+      fail(outflow.bulgeRadius > 0 ? "aortic_sinus_radius" : "atrium_radius",
+           "the atrium and the aortic root would come within a vessel wall of each other " + fmt(y) +
+               " m above the base (axes " + fmt(apart) + " m apart, " + fmt(need) +
+               " m needed); expected a larger model.vessel_lean_deg, smaller bulges or longer vessels");
+  }
 }
 
 void validate(const LvGeometryParams& p) {
@@ -91,6 +157,24 @@ void validate(const LvGeometryParams& p) {
                               fmt(1.5 * kMinGapInWalls) + " * vessel_wall_thickness < endo_radius (" +
                               fmt(p.endoRadius) + " m), got " + fmt(need));
   }
+  const std::pair<const char*, Real> shapes[] = {{"aortic_sinus_radius", p.aorticSinusRadius},
+                                                 {"atrium_radius", p.atriumRadius},
+                                                 {"vessel_lean_deg", p.vesselLeanDeg}};
+  for (const auto& [key, value] : shapes)
+    if (!std::isfinite(value) || value < 0) fail(key, "must be 0 (none) or positive and finite, got " + fmt(value));
+  if (p.aorticSinusRadius > 0 && !(p.aorticSinusRadius > p.aorticRadius &&
+                                   double(p.aorticSinusRadius) <= kMaxSinusInRadii * double(p.aorticRadius)))
+    fail("aortic_sinus_radius", "must be 0 (a straight root) or within (model.aortic_radius, " + fmt(kMaxSinusInRadii) +
+                                    " x model.aortic_radius] = (" + fmt(p.aorticRadius) + ", " +
+                                    fmt(kMaxSinusInRadii * double(p.aorticRadius)) + "] m, got " +
+                                    fmt(p.aorticSinusRadius));
+  if (p.atriumRadius > 0 &&
+      !(p.atriumRadius > p.mitralRadius && double(p.atriumRadius) <= kMaxAtriumInRadii * double(p.mitralRadius)))
+    fail("atrium_radius", "must be 0 (no atrium) or within (model.mitral_radius, " + fmt(kMaxAtriumInRadii) +
+                              " x model.mitral_radius] = (" + fmt(p.mitralRadius) + ", " +
+                              fmt(kMaxAtriumInRadii * double(p.mitralRadius)) + "] m, got " + fmt(p.atriumRadius));
+  if (double(p.vesselLeanDeg) > kMaxLeanDeg)
+    fail("vessel_lean_deg", "must be within [0, " + fmt(kMaxLeanDeg) + "] degrees, got " + fmt(p.vesselLeanDeg));
   // The plate's lattice: one point per sqrt(3)/2 h^2 of the disc, h the smaller of the element
   // size and the gap (makeDims), counted before anything is meshed.
   const double a = double(p.endoRadius);
@@ -103,6 +187,7 @@ void validate(const LvGeometryParams& p) {
                               fmt(kMaxPlatePoints) + "; widen them (smaller model.mitral_radius or "
                               "model.aortic_radius, or a larger model.endo_radius) or lower model.resolution");
   }
+  validateVesselClearance(p);
 }
 
 detail::ShellDims makeDims(const LvGeometryParams& p) {
@@ -115,10 +200,10 @@ detail::ShellDims makeDims(const LvGeometryParams& p) {
   d.h = kEdgePerRadius * d.a / double(p.resolution);
   const double gap = (2 * d.a - 2 * double(p.mitralRadius) - 2 * double(p.aorticRadius)) / 3;
   d.plateH = std::min(d.h, gap);
-  d.mitral = {
-      {-d.a + gap + double(p.mitralRadius), 0}, p.mitralRadius, p.inflowVesselLength, Region::InflowVessel};
-  d.aortic = {
-      {d.a - gap - double(p.aorticRadius), 0}, p.aorticRadius, p.outflowVesselLength, Region::OutflowVessel};
+  d.mitral = {{-d.a + gap + double(p.mitralRadius), 0}, p.mitralRadius, p.inflowVesselLength,
+              Region::InflowVessel, vesselShape(p, VesselKind::Inflow)};
+  d.aortic = {{d.a - gap - double(p.aorticRadius), 0}, p.aorticRadius, p.outflowVesselLength,
+              Region::OutflowVessel, vesselShape(p, VesselKind::Outflow)};
   return d;
 }
 
@@ -172,6 +257,8 @@ FlowPath flowPathOf(const LvModel& model) {
   f.midWallRadius = g.endoRadius + Real(0.5) * g.wallThickness;
   f.midWallLongAxis = g.endoLongAxis + Real(0.5) * g.wallThickness;
   f.plateMid = Real(0.5) * g.baseThickness;
+  f.inflowShape = vesselShape(g, VesselKind::Inflow);
+  f.outflowShape = vesselShape(g, VesselKind::Outflow);
   return f;
 }
 

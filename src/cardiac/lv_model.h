@@ -41,6 +41,11 @@ struct LvGeometryParams {
   Real vesselWallThickness = Real(0.12);  // (m) thin vessel walls
   Real inflowVesselLength = Real(2.0);    // (m) above the base plate
   Real outflowVesselLength = Real(2.0);   // (m)
+  // An anatomical heart's vessels (vessel_shape.h); 0 leaves them straight vertical tubes of the
+  // orifice's radius (the thesis's model).
+  Real aorticSinusRadius = 0;  // (m) lumen radius at the sinuses of Valsalva, > aorticRadius
+  Real atriumRadius = 0;       // (m) lumen radius of the left atrium at its widest, > mitralRadius
+  Real vesselLeanDeg = 0;      // (degrees) each vessel's steepest lean away from the other
   // Resolution in [0.25, 8]: 1 gives the thesis-like model (1,100 vertices, 3,237 tets at the
   // default sizes; the thesis's has 1,061 and 3,345);
   // the element edge length is 0.21 * endoRadius / resolution, so the number of elements grows

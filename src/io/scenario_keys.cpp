@@ -75,6 +75,14 @@ std::vector<KeySpec> modelKeys() {
               "Inflow vessel length above the base plate."),
       realKey("model.outflow_vessel_length", HS_FIELD(geometry.outflowVesselLength), gt(0), kMetres,
               "Outflow vessel length above the base plate."),
+      realKey("model.aortic_sinus_radius", HS_FIELD(geometry.aorticSinusRadius), ge(0), kMetres,
+              "Lumen radius of the aortic root at its three sinuses of Valsalva (0: a straight root of the "
+              "annulus's radius)."),
+      realKey("model.atrium_radius", HS_FIELD(geometry.atriumRadius), ge(0), kMetres,
+              "Lumen radius of the left atrium at its widest, over the mitral annulus (0: a straight inflow "
+              "vessel)."),
+      realKey("model.vessel_lean_deg", HS_FIELD(geometry.vesselLeanDeg), between(0, 40), "deg",
+              "Steepest lean of each vessel away from the other over its lower half (0: vertical)."),
       realKey("model.resolution", HS_FIELD(geometry.resolution), between(0.25, 8), "",
               "Mesh refinement: 1 = thesis-like model (1,100 vertices, 3,237 tets); elements grow ~ "
               "resolution^2."),
