@@ -7,9 +7,9 @@ namespace {
 
 const char* viewCaption(render::View view) {
   switch (view) {
-    case render::View::Front: return "front (anterior)";
-    case render::View::Left: return "left (from -x, septal side)";
-    case render::View::Right: return "right (from +x, lateral side)";
+    case render::View::Front: return "front (three-chamber plane)";
+    case render::View::Left: return "left (from -x, lateral side)";
+    case render::View::Right: return "right (from +x, septal side)";
     case render::View::Top: return "top (onto the base)";
   }
   return "";

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "cardiac/aha_segments.h"
 #include "io/patient_surfaces.h"
 
 namespace hs::app {
@@ -94,6 +95,7 @@ WallReport buildWallReport(const io::ImportedMesh& mesh, const io::MeshSummary& 
 void printWall(const WallReport& r) {
   const cardiac::PatientWall& w = r.wall;
   const cardiac::WallResolution& res = r.settings.resolution;
+  const Eigen::Vector3d septum = w.frame.rotation.transpose() * cardiac::kSeptal;  // in the file's frame
   std::cout << std::setprecision(6) << "  wall: " << mm(res.edgeLength) << " mm edges, " << res.layers
             << " layer" << (res.layers == 1 ? "" : "s") << ", "
             << (r.fromEpicardium ? std::string("up to the epicardium")
@@ -112,8 +114,7 @@ void printWall(const WallReport& r) {
             << w.cavityVolume * 1e6 << " mL with the annuli closed flat\n"
             << "    long axis (file frame, base-ward) (" << w.frame.rotation(1, 0) << ", "
             << w.frame.rotation(1, 1) << ", " << w.frame.rotation(1, 2) << "), septum toward ("
-            << -w.frame.rotation(0, 0) << ", " << -w.frame.rotation(0, 1) << ", " << -w.frame.rotation(0, 2)
-            << ") from the " << w.septumFrom << '\n'
+            << septum.x() << ", " << septum.y() << ", " << septum.z() << ") from the " << w.septumFrom << '\n'
             << "    built in " << std::setprecision(3) << r.seconds << " s\n";
 }
 
@@ -137,7 +138,8 @@ nlohmann::json wallJson(const WallReport& r) {
   j["cavity_volume_ml"] = w.cavityVolume * 1e6;
   const Eigen::Matrix3d& R = w.frame.rotation;
   j["long_axis"] = {R(1, 0), R(1, 1), R(1, 2)};
-  j["septum"] = {-R(0, 0), -R(0, 1), -R(0, 2)};
+  const Eigen::Vector3d septum = R.transpose() * cardiac::kSeptal;  // the frame's septal axis in the file
+  j["septum"] = {septum.x(), septum.y(), septum.z()};
   j["septum_from"] = w.septumFrom;
   j["seconds"] = r.seconds;
   return j;

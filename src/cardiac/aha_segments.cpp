@@ -6,8 +6,7 @@
 namespace hs::cardiac {
 
 double ahaAngleDeg(const Eigen::Vector3d& p) {
-  // atan2(-x, z): 0 at +z (anterior), +90 at -x (septum).
-  const double deg = std::atan2(-p.x(), p.z()) * 180.0 / std::numbers::pi;
+  const double deg = std::atan2(p.dot(kSeptal), p.dot(kAnterior)) * 180.0 / std::numbers::pi;
   return deg < 0 ? deg + 360.0 : deg;
 }
 

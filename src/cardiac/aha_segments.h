@@ -1,7 +1,13 @@
 #pragma once
-// AHA 17-segment classification of left-ventricle myocardium (Cerqueira et al. 2002) for the
-// procedural model's frame: long axis y (base plane y = 0, apex at -y), anterior = +z,
-// septum = -x, inferior = -z, lateral = +x.
+// AHA 17-segment classification of left-ventricle myocardium (Cerqueira et al. 2002) in the
+// heart's frame: long axis y (base plane y = 0, apex at -y), and the front view's plane (x, y) the
+// three-chamber plane of echocardiography, which holds the long axis, the mitral valve and the
+// left ventricular outflow tract: the anteroseptal wall (60 degrees below) toward +x, beside the
+// outflow tract and the aortic valve; the inferolateral wall (240 degrees) toward -x, behind the
+// mitral valve. Anterior (0 degrees) is then kAnterior = (1/2, 0, -sqrt 3/2), the mid-septum (90)
+// kSeptal = (sqrt 3/2, 0, 1/2), and the front view, from +z, looks at the wall from 150 degrees
+// (between inferoseptal and inferior). Looking from the apex toward the base (+y), anterior turns
+// to septal clockwise, as in the bull's-eye: a heart, not its mirror image.
 #include <Eigen/Core>
 #include <cstdint>
 
@@ -11,8 +17,11 @@ namespace hs::cardiac {
 // cap (segment 17).
 inline constexpr double kApexCapDepth = 0.9;
 
-// Angle around the long axis in degrees [0, 360): 0 anterior (+z), 90 septal (-x),
-// 180 inferior (-z), 270 lateral (+x).
+inline const Eigen::Vector3d kAnterior(0.5, 0, -0.8660254037844386);
+inline const Eigen::Vector3d kSeptal(0.8660254037844386, 0, 0.5);
+
+// Angle around the long axis in degrees [0, 360): 0 anterior (kAnterior), 90 septal (kSeptal),
+// 180 inferior, 270 lateral: atan2(p . kSeptal, p . kAnterior).
 double ahaAngleDeg(const Eigen::Vector3d& p);
 
 // Segment 1..17 of a point on (or transmurally above) the endocardium, classified by its

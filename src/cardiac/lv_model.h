@@ -3,7 +3,8 @@
 // shell closed at the base by a plate with a mitral (inflow) and an aortic (outflow) orifice,
 // each continued by a thin-walled vessel. Coordinates: y is the long axis (apex at -y, base at
 // the plane y = 0, vessels rise toward +y); the front view looks along -z, so the viewer's left
-// is -x: the mitral orifice and inflow vessel sit at x < 0, blood enters from the viewer's left.
+// is -x: the mitral orifice and inflow vessel sit at x < 0, blood enters from the viewer's left,
+// and leaves at x > 0 through the outflow tract on the septal side (aha_segments.h).
 #include <array>
 #include <string>
 #include <vector>
@@ -20,7 +21,9 @@ using pbd::Vec3;
 // Where a vertex belongs. Myocardium vertices carry their AHA 17-segment number (1..17):
 // 1-6 basal (anterior, anteroseptal, inferoseptal, inferior, inferolateral, anterolateral),
 // 7-12 mid (same order), 13-16 apical (anterior, septal, inferior, lateral), 17 apex.
-// Orientation: anterior = +z (toward the viewer in the front view), septum = -x.
+// Orientation (aha_segments.h): the front view's plane is the three-chamber plane, the
+// anteroseptal wall toward +x beside the outflow tract, the inferolateral toward -x behind the
+// mitral valve.
 enum class Region : std::uint8_t {
   Myocardium = 0,  // see `segment`
   BasePlate = 1,   // the fibrous plate between the orifices

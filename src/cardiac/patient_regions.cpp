@@ -1,6 +1,6 @@
 // Regions on a patient's ventricle (issue 16, item 3): the AHA 17 segments by the same rule as
 // the procedural heart's (cardiac/aha_segments.h), once the wall is in its frame: the long axis
-// is y, the base plane y = 0, the apex at y = -cavityLength, the septum at -x.
+// is y, the base plane y = 0, the apex at y = -cavityLength, the septum toward kSeptal (aha_segments.h).
 #include "cardiac/aha_segments.h"
 #include "cardiac/patient_wall_internal.h"
 
@@ -29,7 +29,7 @@ VentricleLandmarks landmarksInFile(const PatientWall& wall) {
   for (std::size_t i = 0; i < wall.endoVertices; ++i)
     if (wall.mesh.vertices[i].y() < wall.mesh.vertices[apex].y()) apex = i;
   return {toFile(wall.mesh.vertices[apex].cast<double>()), toFile(Vec3d::Zero()),
-          f.rotation.row(1).transpose(), -f.rotation.row(0).transpose()};
+          f.rotation.row(1).transpose(), f.rotation.transpose() * kSeptal};
 }
 
 }  // namespace hs::cardiac

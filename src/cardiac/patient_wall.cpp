@@ -1,5 +1,7 @@
 #include "cardiac/patient_wall.h"
 
+#include "cardiac/aha_segments.h"
+
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -98,11 +100,16 @@ HeartFrame frameOf(const Vec3d& y, const Vec3d& baseCentre, const Vec3d& septumH
   const Vec3d septum = septumHint - y * y.dot(septumHint);
   if (septumHint.norm() == 0 || septum.norm() < 1e-6 * septumHint.norm())
     fail(file, "the septum direction lies along the long axis; expected one across it");
-  const Vec3d x = -septum.normalized();
+  // The file's septal and anterior directions across the long axis become the heart frame's
+  // kSeptal and kAnterior (aha_segments.h): row k of the rotation is the file direction of the
+  // frame's axis k, kAnterior_k anterior + kSeptal_k septal (the septum, the long axis and the
+  // anterior make a right-handed heart, as kAnterior, kSeptal and y do).
+  const Vec3d septal = septum.normalized();
+  const Vec3d anterior = y.cross(septal);
   HeartFrame f;
-  f.rotation.row(0) = x.transpose();
+  f.rotation.row(0) = (kAnterior.x() * anterior + kSeptal.x() * septal).transpose();
   f.rotation.row(1) = y.transpose();
-  f.rotation.row(2) = x.cross(y).transpose();
+  f.rotation.row(2) = (kAnterior.z() * anterior + kSeptal.z() * septal).transpose();
   f.origin = baseCentre;
   f.metresPerUnit = metresPerUnit;
   return f;

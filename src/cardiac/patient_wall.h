@@ -1,8 +1,9 @@
 #pragma once
 // A patient's left ventricle from its endocardial surface (CT/MRI segmentation), with an
 // epicardium or an assumed wall thickness: the wall as tetrahedra in the procedural heart's
-// frame (cardiac/lv_model.h: metres, long axis y, base plane y = 0, apex at -y, septum -x,
-// anterior +z, so the front view, along -z, shows the septum on the left), the mitral and
+// frame (cardiac/lv_model.h: metres, long axis y, base plane y = 0, apex at -y, the septum toward
+// kSeptal and anterior toward kAnterior of cardiac/aha_segments.h, so the front view, along -z,
+// looks onto the three-chamber plane with the outflow tract on the right), the mitral and
 // aortic annuli found among the surface's boundary loops, and the AHA segments.
 //
 // The steps (docs/patient-meshes.md, "From a surface to a wall"):

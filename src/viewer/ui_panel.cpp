@@ -183,7 +183,7 @@ void displaySection(ViewerControls& c, const ViewerStatus& s) {
     tooltip("Cut the wall open to see into the cavity (removes what lies in front of the plane z = const)");
     ImGui::BeginDisabled(!c.clip);
     ImGui::SliderFloat("clip z", &c.clipZ, s.clipMin, s.clipMax, "%.3f m");
-    tooltip("Position of the cutting plane z = const (m); everything at larger z (anterior) is removed");
+    tooltip("Position of the cutting plane z = const (m); everything at larger z (toward the viewer in the front view) is removed: z = 0 opens the three-chamber plane");
     ImGui::EndDisabled();
     ImGui::SliderFloat("wall opacity", &c.wallOpacity, 0.1f, 1.0f, "%.2f");
     tooltip("Below 1 the wall is drawn see-through (0.1 to 1, no unit)");
@@ -210,8 +210,8 @@ void displaySection(ViewerControls& c, const ViewerStatus& s) {
     render::View view;
     const char* tip;
   } kViews[] = {{"front", render::View::Front, "Anterior view, from +z (1 or F)"},
-                {"left", render::View::Left, "From -x, the septal side (2 or L)"},
-                {"right", render::View::Right, "From +x, the lateral side (3)"},
+                {"left", render::View::Left, "From -x, the lateral side (2 or L)"},
+                {"right", render::View::Right, "From +x, the septal side (3)"},
                 {"top", render::View::Top, "From +y onto the base (4 or T)"}};
   for (const auto& v : kViews) {
     if (ImGui::SmallButton(v.label)) c.viewRequested = v.view;

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "cardiac/aha_segments.h"
 #include "cardiac/lv_model.h"
 
 namespace hs::cardiac {
@@ -34,9 +35,13 @@ double sumTetVolumes(const pbd::TetMesh& m) {
   return sum;
 }
 
-// Angle around the long axis: 0 anterior (+z), 90 septal (-x), 180 inferior, 270 lateral.
+// Angle around the long axis: 0 anterior, 90 septal, 180 inferior, 270 lateral, written out
+// from the frame (aha_segments.h): anterior (1/2, 0, -sqrt 3/2), septal (sqrt 3/2, 0, 1/2).
 double angleDeg(const Vec3& p) {
-  const double deg = std::atan2(-double(p.x()), double(p.z())) * 180.0 / std::numbers::pi;
+  const double s3 = std::sqrt(3.0) / 2;
+  const double anterior = 0.5 * double(p.x()) - s3 * double(p.z());
+  const double septal = s3 * double(p.x()) + 0.5 * double(p.z());
+  const double deg = std::atan2(septal, anterior) * 180.0 / std::numbers::pi;
   return deg < 0 ? deg + 360 : deg;
 }
 
@@ -63,6 +68,29 @@ TEST(LvModel, CountsMatchThesisModel) {
   }
   EXPECT_TRUE(std::all_of(onSurface.begin(), onSurface.end(), [](int s) { return s == 1; }));
   EXPECT_EQ(m.mesh.vertices.size() % 2, 0u);
+}
+
+// The front view's plane is the three-chamber plane (aha_segments.h): the aortic orifice, where
+// the outflow tract leaves, is anteroseptal (60 degrees), the mitral inferolateral (240): the
+// outflow on the septal side, blood entering on the viewer's left.
+TEST(LvModel, TheOutflowTractIsOnTheSeptalSideTheInflowLateral) {
+  const LvModel& m = defaultModel();
+  EXPECT_NEAR(angleDeg(m.flowPath.aortic.centre), 60.0, 1e-3);
+  EXPECT_NEAR(angleDeg(m.flowPath.mitral.centre), 240.0, 1e-3);
+  EXPECT_LT(m.flowPath.mitral.centre.x(), m.flowPath.aortic.centre.x());
+  // The segments there: basal anteroseptal (2) under the aortic ring, inferolateral (5) beside
+  // the mitral.
+  auto nearestSegment = [&](const Vec3& p) {
+    double best = 1e30;
+    int segment = 0;
+    for (std::size_t v = 0; v < m.mesh.vertices.size(); v += 2)
+      if (m.segment[v] != 0 && (m.mesh.vertices[v] - p).squaredNorm() < best)
+        best = (m.mesh.vertices[v] - p).squaredNorm(), segment = m.segment[v];
+    return segment;
+  };
+  const Vec3 aortic = m.flowPath.aortic.centre, mitral = m.flowPath.mitral.centre;
+  EXPECT_EQ(nearestSegment(Vec3(aortic.x() * 3, -m.params.endoLongAxis / 10, aortic.z())), 2);
+  EXPECT_EQ(nearestSegment(Vec3(mitral.x() * 3, -m.params.endoLongAxis / 10, mitral.z())), 5);
 }
 
 TEST(LvModel, TetsArePositiveAndWellShaped) {
@@ -119,16 +147,18 @@ TEST(LvModel, SegmentsCoverTheMyocardiumInTheirSectors) {
     }
   }
   for (int s = 1; s <= 17; ++s) EXPECT_GT(count[s], 0) << "segment " << s;
-  // Orientation: the anterior segment 1 lies at +z, the septal ones (2, 3) at -x.
+  // Orientation: the anterior segment 1 lies toward kAnterior, the septal ones (3, 14) toward
+  // kSeptal, the apical lateral one (16) away from it.
   for (std::size_t v = 0; v < m.mesh.vertices.size(); v += 2) {
+    const Eigen::Vector3d p = m.mesh.vertices[v].cast<double>();
     if (m.segment[v] == 1) {
-      EXPECT_GT(m.mesh.vertices[v].z(), 0);
+      EXPECT_GT(p.dot(kAnterior), 0);
     }
     if (m.segment[v] == 3 || m.segment[v] == 14) {
-      EXPECT_LT(m.mesh.vertices[v].x(), 0);
+      EXPECT_GT(p.dot(kSeptal), 0);
     }
     if (m.segment[v] == 16) {
-      EXPECT_GT(m.mesh.vertices[v].x(), 0);
+      EXPECT_LT(p.dot(kSeptal), 0);
     }
   }
 }

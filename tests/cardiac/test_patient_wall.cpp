@@ -2,6 +2,8 @@
 // scanner frame: the frame found again, the annuli, the flat base opened, quality, volume.
 #include <gtest/gtest.h>
 
+#include "cardiac/aha_segments.h"
+
 #include "patient_test_hearts.h"
 #include "thrown_message.h"
 
@@ -28,9 +30,9 @@ TEST(PatientWall, TruncatedCupInAScannerFrameIsPlacedBaseUpWithItsOrificesOpened
   settings.septum = scannerRotation() * Vec3d::UnitZ();  // the cup's +z side is the septum
   const PatientWall w = buildPatientWall(inScannerFrame(spheroidCup()), nullptr, settings);
   EXPECT_TRUE(w.baseOpened);
-  // The frame: the long axis is the cup's y (base-ward), the septum -x.
+  // The frame: the long axis is the cup's y (base-ward), the septum the frame's kSeptal.
   EXPECT_NEAR(w.frame.rotation.row(1).dot(scannerRotation() * Vec3d::UnitY()), 1.0, 1e-3);
-  EXPECT_NEAR(w.frame.rotation.row(0).dot(scannerRotation() * Vec3d::UnitZ()), -1.0, 1e-3);
+  EXPECT_NEAR((w.frame.rotation.transpose() * kSeptal).dot(scannerRotation() * Vec3d::UnitZ()), 1.0, 1e-3);
   EXPECT_NEAR(w.frame.rotation.determinant(), 1.0, 1e-9);
   EXPECT_NEAR(w.cavityLength, kLengthMm * 1e-3, 0.5e-3);
   // Base up, apex down: the rim at y = 0, every endocardial point below the plate.
@@ -58,10 +60,12 @@ TEST(PatientWall, TwoAnnuliAreFoundBySizeAndTheSeptumIsOnTheAorticSide) {
   // about the long axis (the cup's +y) the way that takes anterior to septal (about -y).
   const Vec3d septum =
       scannerRotation() * (Eigen::AngleAxisd(-std::numbers::pi / 4, Vec3d::UnitY()) * Vec3d::UnitX());
-  EXPECT_NEAR(w.frame.rotation.row(0).dot(septum), -1.0, 1e-3);
+  EXPECT_NEAR((w.frame.rotation.transpose() * kSeptal).dot(septum), 1.0, 1e-3);
   EXPECT_EQ(w.septumFrom, "aortic annulus");
-  EXPECT_LT(ringCentre(w, w.aorticRing).x(), 0);
-  EXPECT_GT(ringCentre(w, w.mitralRing).x(), 0);
+  // As in the procedural heart: the aortic annulus toward +x (the outflow on the septal side),
+  // the mitral toward -x (blood enters on the front view's left).
+  EXPECT_GT(ringCentre(w, w.aorticRing).x(), 0);
+  EXPECT_LT(ringCentre(w, w.mitralRing).x(), 0);
   EXPECT_NEAR(w.frame.rotation.row(1).dot(scannerRotation() * Vec3d::UnitY()), 1.0, 1e-2);
   // Remeshing rounds the right-angled crease between the cup and the plate (no feature edges
   // are kept): 2.3% of this small (6.5 cm) ventricle's volume at 5 mm.

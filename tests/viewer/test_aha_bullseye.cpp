@@ -125,8 +125,9 @@ TEST(AhaBullseye, AgreesWithTheModelsClassificationAllAround) {
     for (int k = 0; k < 52; ++k) {
       const double a = 1.0 + 7.0 * k;  // degrees, never on a border
       const double rad = a * M_PI / 180;
-      // ahaAngleDeg is atan2(-x, z): x = -sin a, z = cos a gives angle a.
-      const Eigen::Vector3d p(-std::sin(rad), -band.depth * kCavity, std::cos(rad));
+      // ahaAngleDeg is atan2(p . kSeptal, p . kAnterior): cos a kAnterior + sin a kSeptal gives a.
+      Eigen::Vector3d p = std::cos(rad) * cardiac::kAnterior + std::sin(rad) * cardiac::kSeptal;
+      p.y() = -band.depth * kCavity;
       ASSERT_NEAR(cardiac::ahaAngleDeg(p), a, 1e-9);
       const Polar q{band.r, float(90 + a)};
       EXPECT_EQ(bullseyeSegmentAt(px(q), py(q)), int(cardiac::ahaSegment(p, kCavity)))
