@@ -238,8 +238,9 @@ int drawTimes(cardiac::HeartSimulation& sim, Offscreen& out, const RenderPlan& p
       out.target.bind();
       out.renderer.draw(scene, render::viewCamera(view, scene.bounds, aspect), plan.width, plan.height);
       viz::Image image = out.target.read();
-      render::drawLabels(image, labels, render::viewCamera(view, scene.bounds, aspect));
-      if (sim.hasBlood()) render::drawBloodLegend(image, sceneOptions.bloodColour, scaleMax);
+      std::vector<viz::Rect> key;
+      if (sim.hasBlood()) key.push_back(render::drawBloodLegend(image, sceneOptions.bloodColour, scaleMax));
+      render::drawLabels(image, labels, render::viewCamera(view, scene.bounds, aspect), key);
       image.drawText(6 * textScale, 6 * textScale, std::string(render::viewName(view)) + ", " + label, textScale,
                      {40, 40, 50});
       image.savePng((plan.outDir / ("t" + formatTime(t) + "_" + render::viewName(view) + ".png")).string());

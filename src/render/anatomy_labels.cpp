@@ -18,6 +18,23 @@ Vec3f centroid(const Ids& ids, const std::vector<pbd::Vec3>& x) {
 // level, apical septal (Cerqueira et al. 2002, Circulation 105:539).
 constexpr std::uint8_t kSeptalSegments[] = {2, 3, 8, 9, 14};
 
+// A vessel's bulge (an anatomical heart's atrium or aortic sinuses, cardiac/vessel_shape.h): its
+// lumen's vertices at rest more than a fifth wider from the vessel's axis than the orifice. None
+// for a straight vessel.
+std::vector<cardiac::Index> bulgeOf(const cardiac::LvModel& model, bool inflow) {
+  const cardiac::FlowPath& path = model.flowPath;
+  const cardiac::Region region = inflow ? cardiac::Region::InflowVessel : cardiac::Region::OutflowVessel;
+  const pbd::Real wider = pbd::Real(1.2) * (inflow ? path.mitral.radius : path.aortic.radius);
+  std::vector<cardiac::Index> bulge;
+  if ((inflow ? path.inflowShape : path.outflowShape).bulgeRadius == 0) return bulge;
+  for (cardiac::Index v = 0; v < cardiac::Index(model.region.size()); v += 2) {
+    if (model.region[v] != region) continue;
+    const pbd::Vec3& rest = model.mesh.vertices[v];
+    if ((inflow ? path.inflowSection(rest.y()) : path.outflowSection(rest.y())).radial(rest) > wider) bulge.push_back(v);
+  }
+  return bulge;
+}
+
 }  // namespace
 
 const char* labelSetName(LabelSet set) { return set == LabelSet::Off ? "off" : "anatomy"; }
@@ -66,6 +83,11 @@ std::vector<SceneLabel> anatomyLabels(const cardiac::HeartSimulation& sim, Label
   labels.push_back({"aortic valve (outflow)", aortic, outflowSide, Vec3f::Zero(), false});
   labels.push_back({"to the aorta", centroid(outflowEnd, x) - 1.5f * outflowArrow * up, outflowSide,
                     outflowArrow * up, false});
+  // An anatomical heart's atrium and aortic root, named where their bulges are now.
+  if (const auto atrium = bulgeOf(model, true); !atrium.empty())
+    labels.push_back({"left atrium", centroid(atrium, x), inflowSide, Vec3f::Zero(), false});
+  if (const auto root = bulgeOf(model, false); !root.empty())
+    labels.push_back({"aortic root (sinuses)", centroid(root, x), outflowSide, Vec3f::Zero(), false});
   labels.push_back({"left ventricle", ventricle, septumAt.x() <= ventricle.x() ? LabelSide::Right : LabelSide::Left,
                     Vec3f::Zero(), false});
   labels.push_back({"septum", septumAt, septumAt.x() <= ventricle.x() ? LabelSide::Left : LabelSide::Right,
@@ -109,12 +131,15 @@ void drawArrow(viz::Image& image, float x0, float y0, float x1, float y1, int sc
 
 }  // namespace
 
-void drawLabels(viz::Image& image, const std::vector<SceneLabel>& labels, const Camera& camera) {
+void drawLabels(viz::Image& image, const std::vector<SceneLabel>& labels, const Camera& camera,
+                const std::vector<viz::Rect>& avoid) {
   const int w = image.width(), h = image.height();
   const int scale = std::max(1, std::min(w, h) / 300);
   const float reach = 22.0f * float(scale);
   const int pad = 2 * scale, textHeight = viz::Image::capHeight(scale);
-  std::vector<viz::Rect> placed;  // boxes drawn so far: a name that would cover one moves down
+  // Boxes on the image so far (the key, the names drawn): a name that would cover one moves a
+  // line down, then up, then two lines, and so on, staying inside the image.
+  std::vector<viz::Rect> placed = avoid;
   auto overlaps = [&](const viz::Rect& r) {
     for (const viz::Rect& q : placed)
       if (r.x < q.x + q.width && q.x < r.x + r.width && r.y < q.y + q.height && q.y < r.y + r.height) return true;
@@ -138,7 +163,11 @@ void drawLabels(viz::Image& image, const std::vector<SceneLabel>& labels, const 
     tx = std::clamp(tx, pad, std::max(pad, w - textWidth - pad));
     ty = std::clamp(ty, pad, std::max(pad, h - textHeight - pad));
     viz::Rect box{tx - pad, ty - pad, textWidth + 2 * pad, textHeight + 2 * pad};
-    for (int tries = 0; tries < 12 && overlaps(box); ++tries) box.y += box.height + pad;
+    const int first = box.y, step = box.height + pad;
+    for (int tries = 1; tries <= 24 && overlaps(box); ++tries) {
+      const int lines = (tries + 1) / 2 * (tries % 2 == 1 ? 1 : -1);  // +1, -1, +2, -2, ...
+      box.y = std::clamp(first + lines * step, 0, std::max(0, h - box.height));
+    }
     const float shift = float(box.y + pad - ty);
     ty = box.y + pad;
     placed.push_back(box);

@@ -50,6 +50,8 @@ ProjectedLabel projectLabel(const SceneLabel& label, const Camera& camera, int w
 // The labels drawn into a finished image seen by `camera`: a dot at each anchor, a leader line
 // out to a pale box with the name (on the side away from the image's centre, so it points
 // outward from the heart in every view), the flow arrows in white with a dark rim.
-void drawLabels(viz::Image& image, const std::vector<SceneLabel>& labels, const Camera& camera);
+// `avoid`: boxes already on the image (the colour key) that no name may cover.
+void drawLabels(viz::Image& image, const std::vector<SceneLabel>& labels, const Camera& camera,
+                const std::vector<viz::Rect>& avoid = {});
 
 }  // namespace hs::render

@@ -319,11 +319,14 @@ struct KeyLayout {
 };
 constexpr viz::Rgb kInk{40, 40, 50};
 
+// The key's box in the lower right corner, its title drawn; `box` is where it is. Returns where
+// its content begins.
 std::array<int, 2> drawKeyBox(viz::Image& image, const KeyLayout& k, const std::string& title, int contentWidth,
-                              int contentHeight) {
+                              int contentHeight, viz::Rect& box) {
   const int boxWidth = std::max(contentWidth, viz::Image::textWidth(title, k.scale)) + 2 * k.margin;
   const int boxHeight = k.line + contentHeight + 2 * k.margin;
   const int x0 = image.width() - boxWidth - k.margin, y0 = image.height() - boxHeight - k.margin;
+  box = {x0, y0, boxWidth, boxHeight};
   image.fillRect({x0, y0, boxWidth, boxHeight}, {250, 250, 252});
   image.strokeRect({x0, y0, boxWidth, boxHeight}, {150, 155, 165});
   image.drawText(x0 + k.margin, y0 + k.margin, title, k.scale, kInk);
@@ -331,12 +334,12 @@ std::array<int, 2> drawKeyBox(viz::Image& image, const KeyLayout& k, const std::
 }
 
 // One swatch and label per origin, one line each.
-void drawOriginKey(viz::Image& image, const KeyLayout& k) {
+void drawOriginKey(viz::Image& image, const KeyLayout& k, viz::Rect& box) {
   const int swatch = viz::Image::capHeight(k.scale) + 2 * k.scale, gap = 4 * k.scale;
   int width = 0;
   for (const OriginKeyRow& row : originKey())
     width = std::max(width, swatch + gap + viz::Image::textWidth(row.label, k.scale));
-  auto [x, y] = drawKeyBox(image, k, "blood by where it started", width, int(originKey().size()) * k.line);
+  auto [x, y] = drawKeyBox(image, k, "blood by where it started", width, int(originKey().size()) * k.line, box);
   for (const OriginKeyRow& row : originKey()) {
     image.fillRect({x, y + k.capHalf - swatch / 2, swatch, swatch}, toRgb(originColour(row.origin)));
     image.drawText(x + swatch + gap, y, row.label, k.scale, kInk);
@@ -345,13 +348,13 @@ void drawOriginKey(viz::Image& image, const KeyLayout& k) {
 }
 
 // The colour bar from 0 (bottom) to scaleMax (top), labelled at both ends and the middle.
-void drawScaleBar(viz::Image& image, const KeyLayout& k, const std::string& title, double scaleMax) {
+void drawScaleBar(viz::Image& image, const KeyLayout& k, const std::string& title, double scaleMax, viz::Rect& box) {
   const int barWidth = 18 * k.scale, barHeight = std::min(image.height() / 4, 90 * k.scale);
   char top[32], mid[32];
   std::snprintf(top, sizeof top, "%g", scaleMax);
   std::snprintf(mid, sizeof mid, "%g", scaleMax / 2);
   const int labelWidth = viz::Image::textWidth(top, k.scale) + 4 * k.scale;
-  const auto [barX, titleEnd] = drawKeyBox(image, k, title, barWidth + labelWidth, barHeight + k.margin);
+  const auto [barX, titleEnd] = drawKeyBox(image, k, title, barWidth + labelWidth, barHeight + k.margin, box);
   const int barY = titleEnd + k.margin;
   for (int row = 0; row < barHeight; ++row)
     image.fillRect({barX, barY + row, barWidth, 1}, toRgb(speedColour(1.0 - double(row) / double(barHeight - 1))));
@@ -364,13 +367,15 @@ void drawScaleBar(viz::Image& image, const KeyLayout& k, const std::string& titl
 
 }  // namespace
 
-void drawBloodLegend(viz::Image& image, BloodColour colour, double scaleMax) {
+viz::Rect drawBloodLegend(viz::Image& image, BloodColour colour, double scaleMax) {
   const KeyLayout k(image);
+  viz::Rect box{};
   switch (colour) {
-    case BloodColour::Speed: drawScaleBar(image, k, "blood speed (m/s)", scaleMax); break;
-    case BloodColour::Pressure: drawScaleBar(image, k, "blood pressure (mmHg)", scaleMax); break;
-    case BloodColour::Origin: drawOriginKey(image, k); break;
+    case BloodColour::Speed: drawScaleBar(image, k, "blood speed (m/s)", scaleMax, box); break;
+    case BloodColour::Pressure: drawScaleBar(image, k, "blood pressure (mmHg)", scaleMax, box); break;
+    case BloodColour::Origin: drawOriginKey(image, k, box); break;
   }
+  return box;
 }
 
 }  // namespace hs::render

@@ -129,6 +129,6 @@ std::span<const OriginKeyRow> originKey();
 
 // The blood's colour key in the image's lower right corner, text scaled with the image: a bar
 // "blood speed (m/s)" or "blood pressure (mmHg)" from 0 to scaleMax, or the origin key.
-void drawBloodLegend(viz::Image& image, BloodColour colour, double scaleMax);
+[[nodiscard]] viz::Rect drawBloodLegend(viz::Image& image, BloodColour colour, double scaleMax);
 
 }  // namespace hs::render

@@ -48,6 +48,31 @@ TEST(SceneLabels, NameTheInflowTheValvesTheAortaAndTheApexWhereTheyAre) {
   for (const auto& x : sim.particles().position) EXPECT_GE(x.y(), apex.anchor.y() - 1e-5);
 }
 
+// An anatomical heart's atrium and aortic root get their own names, inside their bulges, the
+// atrium over the mitral valve and the root over the aortic one; straight vessels get none.
+TEST(SceneLabels, AnAtriumAndAnAorticRootAreNamedInTheirBulges) {
+  cardiac::Scenario scenario = io::loadScenario("normal");
+  scenario.geometry.inflowVesselLength = pbd::Real(0.06);
+  scenario.geometry.outflowVesselLength = pbd::Real(0.05);
+  scenario.geometry.atriumRadius = pbd::Real(0.020);
+  scenario.geometry.aorticSinusRadius = pbd::Real(0.016);
+  scenario.geometry.vesselLeanDeg = pbd::Real(35);
+  const cardiac::HeartSimulation sim(scenario, 1);
+  const std::vector<SceneLabel> labels = anatomyLabels(sim);
+  ASSERT_EQ(labels.size(), 9u);
+  const cardiac::FlowPath& path = sim.model().flowPath;
+  const SceneLabel& atrium = named(labels, "left atrium");
+  const SceneLabel& root = named(labels, "aortic root");
+  const cardiac::Orifice atriumSection = path.inflowSection(atrium.anchor.y());
+  const cardiac::Orifice rootSection = path.outflowSection(root.anchor.y());
+  EXPECT_LT(atriumSection.radial(atrium.anchor.cast<pbd::Real>()), atriumSection.radius) << "inside the atrium";
+  EXPECT_LT(rootSection.radial(root.anchor.cast<pbd::Real>()), rootSection.radius) << "inside the root";
+  EXPECT_GT(atrium.anchor.y(), path.mitral.centre.y());
+  EXPECT_GT(root.anchor.y(), path.aortic.centre.y());
+  EXPECT_LT(atrium.anchor.x(), root.anchor.x()) << "the atrium on the inflow's side";
+  EXPECT_EQ(anatomyLabels(cardiac::HeartSimulation(io::loadScenario("normal"), 1)).size(), 7u);
+}
+
 TEST(SceneLabels, NoHeartNoLabels) {
   const cardiac::Scenario scenario = io::loadScenario("dam-break");
   ASSERT_FALSE(scenario.heart);
@@ -123,6 +148,37 @@ TEST(SceneLabels, RenderDrawsThemIntoTheImage) {
     const viz::Rgb at = image.at(std::clamp(int(p.x), 0, 399), std::clamp(int(p.y), 0, 299));
     EXPECT_LT(int(at.r) + at.g + at.b, 3 * 150) << label.text << ": the anchor's dot";
   }
+}
+
+// The colour key in the lower right corner: no name's box is drawn over it (on the heart with an
+// atrium and an aortic root, framed taller, the front view's septum and ventricle names lie
+// toward it), and the same names drawn without the key do cover it.
+TEST(SceneLabels, NoNameCoversTheColourKey) {
+  cardiac::Scenario scenario = io::loadScenario("normal");
+  scenario.geometry.inflowVesselLength = pbd::Real(0.06);
+  scenario.geometry.outflowVesselLength = pbd::Real(0.05);
+  scenario.geometry.atriumRadius = pbd::Real(0.020);
+  scenario.geometry.aorticSinusRadius = pbd::Real(0.016);
+  scenario.geometry.vesselLeanDeg = pbd::Real(35);
+  const cardiac::HeartSimulation sim(scenario, 1);
+  const std::vector<SceneLabel> labels = anatomyLabels(sim);
+  const render::Camera camera = render::viewCamera(render::View::Front, render::sceneBounds(sim), 4.0f / 3);
+  viz::Image scratch(800, 600);
+  const viz::Rect key = render::drawBloodLegend(scratch, render::BloodColour::Speed, 2.0);
+  ASSERT_GT(key.width * key.height, 100 * 100);
+  auto paperIn = [&](const viz::Image& image) {  // the names' boxes are pure white, the rest grey
+    int n = 0;
+    for (int y = key.y; y < key.y + key.height; ++y)
+      for (int x = key.x; x < key.x + key.width; ++x) n += image.at(x, y) == viz::Rgb{255, 255, 255};
+    return n;
+  };
+  viz::Image avoided(800, 600), covered(800, 600);
+  avoided.fill({200, 200, 200});
+  covered.fill({200, 200, 200});
+  render::drawLabels(avoided, labels, camera, {key});
+  render::drawLabels(covered, labels, camera);
+  EXPECT_GT(paperIn(covered), 100) << "the test must put a name where the key is";
+  EXPECT_EQ(paperIn(avoided), 0);
 }
 
 }  // namespace
