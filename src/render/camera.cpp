@@ -78,7 +78,7 @@ Vec3f viewDirection(View view) { return viewFacts(view).towardEye; }
 Camera viewCamera(View view, const Box& bounds, float aspect) {
   const Vec3f towardEye = viewDirection(view);
   // Top: tilted up over the base from the front view, so x keeps its direction (-x on the
-  // left) and anterior (+z) comes to the bottom of the image.
+  // left) and +z, the front view's side, comes to the bottom of the image.
   const Vec3f up = view == View::Top ? Vec3f(0, 0, -1) : Vec3f(0, 1, 0);
   const Vec3f right = (-towardEye).cross(up);
   const Vec3f centre = bounds.centre();

@@ -34,9 +34,11 @@ struct Camera {
   Vec3f project(const Vec3f& world, int width, int height) const;
 };
 
-// front: anterior view, looking along -z (the mitral side, -x, on the viewer's left);
-// left / right: from -x / +x looking along +x / -x; top: from +y down onto the base, -x on the
-// viewer's left and anterior (+z) at the bottom of the image. Up is +y except for top.
+// front: onto the three-chamber plane, looking along -z (the mitral side, -x, on the viewer's
+// left, the outflow tract and the septum on the right; cardiac/aha_segments.h); left / right:
+// from -x (lateral) / +x (septal) looking along +x / -x; top: from +y down onto the base, -x on
+// the viewer's left and +z (the front view's side) at the bottom of the image. Up is +y except
+// for top.
 enum class View { Front, Left, Right, Top };
 inline constexpr std::array<View, 4> kAllViews = {View::Front, View::Left, View::Right, View::Top};
 const char* viewName(View view);
