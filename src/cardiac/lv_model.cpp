@@ -86,32 +86,6 @@ VesselShape vesselShape(const LvGeometryParams& p, VesselKind kind) {
   return s;
 }
 
-// The two vessels' outer walls, level by level above the plate: their axes must stay apart by
-// both largest outer radii and one more wall. Sections are horizontal (vessel_shape.h), so
-// levels that clear each other mean vessels that do.
-void validateVesselClearance(const LvGeometryParams& p) {
-  const double a = double(p.endoRadius), w = double(p.vesselWallThickness);
-  const double rm = double(p.mitralRadius), ra = double(p.aorticRadius);
-  const double gap = (2 * a - 2 * rm - 2 * ra) / 3;
-  const double xm = -a + gap + rm, xa = a - gap - ra;
-  const VesselShape inflow = vesselShape(p, VesselKind::Inflow), outflow = vesselShape(p, VesselKind::Outflow);
-  if (inflow.straight() && outflow.straight()) return;
-  const double bt = double(p.baseThickness);
-  const double topIn = bt + double(p.inflowVesselLength), topOut = bt + double(p.outflowVesselLength);
-  constexpr int kLevels = 400;
-  for (int k = 0; k <= kLevels; ++k) {
-    const double y = bt + (std::min(topIn, topOut) - bt) * k / kLevels;
-    const double uIn = y / topIn, uOut = y / topOut;
-    const double apart = (xa + outflow.shift(uOut)) - (xm - inflow.shift(uIn));
-    const double need = inflow.maxRadius(uIn, rm) + outflow.maxRadius(uOut, ra) + 3 * w;
-    if (apart < need)
-      fail(outflow.bulgeRadius > 0 ? "aortic_sinus_radius" : "atrium_radius",
-           "the atrium and the aortic root would come within a vessel wall of each other " + fmt(y) +
-               " m above the base (axes " + fmt(apart) + " m apart, " + fmt(need) +
-               " m needed); expected a larger model.vessel_lean_deg, smaller bulges or longer vessels");
-  }
-}
-
 void validate(const LvGeometryParams& p) {
   const std::pair<const char*, Real> positive[] = {{"endo_radius", p.endoRadius},
                                                    {"endo_long_axis", p.endoLongAxis},
@@ -187,7 +161,6 @@ void validate(const LvGeometryParams& p) {
                               fmt(kMaxPlatePoints) + "; widen them (smaller model.mitral_radius or "
                               "model.aortic_radius, or a larger model.endo_radius) or lower model.resolution");
   }
-  validateVesselClearance(p);
 }
 
 detail::ShellDims makeDims(const LvGeometryParams& p) {
@@ -205,6 +178,30 @@ detail::ShellDims makeDims(const LvGeometryParams& p) {
   d.aortic = {{d.a - gap - double(p.aorticRadius), 0}, p.aorticRadius, p.outflowVesselLength,
               Region::OutflowVessel, vesselShape(p, VesselKind::Outflow)};
   return d;
+}
+
+// The two vessels' outer walls, level by level above the plate: their axes must stay apart by
+// both largest outer radii and one more wall. Sections are horizontal (vessel_shape.h), so
+// levels that clear each other mean vessels that do. Read from the dimensions the mesh is built
+// from (makeDims: the orifices' places and the vessels' shapes).
+void validateVesselClearance(const detail::ShellDims& d) {
+  const detail::ShellDims::Orifice &inflow = d.mitral, &outflow = d.aortic;
+  if (inflow.shape.straight() && outflow.shape.straight()) return;
+  const double bt = d.baseThickness, w = d.vesselWall;
+  const double topIn = bt + inflow.length, topOut = bt + outflow.length;
+  constexpr int kLevels = 400;
+  for (int k = 0; k <= kLevels; ++k) {
+    const double y = bt + (std::min(topIn, topOut) - bt) * k / kLevels;
+    const double uIn = y / topIn, uOut = y / topOut;
+    const double apart =
+        (outflow.centre.x() + outflow.shape.shift(uOut)) - (inflow.centre.x() - inflow.shape.shift(uIn));
+    const double need = inflow.shape.maxRadius(uIn, inflow.radius) + outflow.shape.maxRadius(uOut, outflow.radius) + 3 * w;
+    if (apart < need)
+      fail(outflow.shape.bulgeRadius > 0 ? "aortic_sinus_radius" : "atrium_radius",
+           "the atrium and the aortic root would come within a vessel wall of each other " + fmt(y) +
+               " m above the base (axes " + fmt(apart) + " m apart, " + fmt(need) +
+               " m needed); expected a larger model.vessel_lean_deg, smaller bulges or longer vessels");
+  }
 }
 
 // Inner-layer ids of an orifice ring, ordered so the fan (centroid, r_k, r_k+1) faces +y.
@@ -266,6 +263,7 @@ FlowPath flowPathOf(const LvModel& model) {
 
 LvModel buildLvModel(const LvGeometryParams& params) {
   validate(params);
+  validateVesselClearance(makeDims(params));
   try {
     return buildValidatedLvModel(params);
   } catch (const std::logic_error& e) {

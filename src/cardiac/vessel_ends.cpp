@@ -17,6 +17,8 @@ constexpr double kFollow = 0.2;
 
 VesselEnds::VesselEnds(const FlowPath& path, const BloodSettings& blood)
     : m_path(path),
+      m_inflowEnd(path.inflowEnd()),
+      m_outflowEnd(path.outflowEnd()),
       m_depth(blood.supportRadius),
       m_spacing(blood.spacing),
       m_particleVolume(double(blood.spacing) * double(blood.spacing) * double(blood.spacing)),
@@ -33,13 +35,12 @@ void VesselEnds::setFlows(double mitralFlow, double aorticFlow, double descentRa
 }
 
 bool VesselEnds::inInflowBuffer(const Vec3& x) const {
-  const Orifice end = m_path.inflowEnd();
-  return x.y() > m_path.inflowTop - m_depth && end.radial(x) < end.radius + m_spacing;
+  return x.y() > m_path.inflowTop - m_depth && m_inflowEnd.radial(x) < m_inflowEnd.radius + m_spacing;
 }
 
 bool VesselEnds::inBuffer(const Vec3& x) const {
-  const Orifice end = m_path.outflowEnd();
-  return inInflowBuffer(x) || (x.y() > m_path.outflowTop - m_depth && end.radial(x) < end.radius + m_spacing);
+  return inInflowBuffer(x) ||
+         (x.y() > m_path.outflowTop - m_depth && m_outflowEnd.radial(x) < m_outflowEnd.radius + m_spacing);
 }
 
 // The outflow's plug moves at the lumped speed u_a = Q_aortic / A - w, plus what it owes the
@@ -51,7 +52,7 @@ bool VesselEnds::inBuffer(const Vec3& x) const {
 // with a shut valve below) down at kFollow (n/n0 - 1) d / dt:
 //   u = max(0, u_a + V / (A tau)) clamp(1 - (1 - n/n0) / kLooseStop, 0, 1) + kFollow min(n/n0 - 1, 0) d / dt.
 Real VesselEnds::outflowPlugSpeed(const pbd::Particles& particles, Index first, Real dt) {
-  const Orifice aortic = m_path.outflowEnd();
+  const Orifice& aortic = m_outflowEnd;
   std::size_t count = 0;
   for (std::size_t i = first; i < particles.size(); ++i) {
     const Vec3& x = particles.position[i];

@@ -53,6 +53,7 @@ class VesselEnds {
   [[nodiscard]] Vec3 plugHeight(const Vec3& p, std::size_t k) const;
 
   FlowPath m_path;
+  Orifice m_inflowEnd, m_outflowEnd;  // the vessels' far ends' discs (FlowPath::inflowEnd), found once
   Real m_depth, m_spacing;
   double m_particleVolume;
   Real m_inflowArea, m_outflowArea;

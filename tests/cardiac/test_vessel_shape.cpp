@@ -23,15 +23,7 @@ using testing::normalGeometry;
 constexpr double kPi = std::numbers::pi;
 
 // normal's sizes with a 32 mm root, a 40 mm atrium and both vessels leaning 35 degrees.
-LvGeometryParams anatomicalGeometry() {
-  LvGeometryParams g = normalGeometry();
-  g.inflowVesselLength = Real(0.06);
-  g.outflowVesselLength = Real(0.05);
-  g.aorticSinusRadius = Real(0.016);
-  g.atriumRadius = Real(0.020);
-  g.vesselLeanDeg = Real(35);
-  return g;
-}
+LvGeometryParams anatomicalGeometry() { return testing::withAnatomicalVessels(normalGeometry()); }
 
 const LvModel& anatomicalModel() {
   static const LvModel model = buildLvModel(anatomicalGeometry());

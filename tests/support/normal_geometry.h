@@ -19,4 +19,15 @@ inline LvGeometryParams normalGeometry() {
   return g;
 }
 
+// The anatomical vessels (docs/lv-model.md) on a heart's sizes: a 32 mm aortic root, a 40 mm
+// atrium, both vessels leaning 35 degrees, 60 and 50 mm long.
+inline LvGeometryParams withAnatomicalVessels(LvGeometryParams g) {
+  g.inflowVesselLength = Real(0.06);
+  g.outflowVesselLength = Real(0.05);
+  g.aorticSinusRadius = Real(0.016);
+  g.atriumRadius = Real(0.020);
+  g.vesselLeanDeg = Real(35);
+  return g;
+}
+
 }  // namespace hs::cardiac::testing

@@ -7,6 +7,7 @@
 
 #include "cardiac/heart_simulation.h"
 #include "io/scenario_file.h"
+#include "normal_geometry.h"
 #include "viewer/camera_controller.h"
 #include "render/scene.h"
 #include "viewer/scene_labels.h"
@@ -52,11 +53,7 @@ TEST(SceneLabels, NameTheInflowTheValvesTheAortaAndTheApexWhereTheyAre) {
 // atrium over the mitral valve and the root over the aortic one; straight vessels get none.
 TEST(SceneLabels, AnAtriumAndAnAorticRootAreNamedInTheirBulges) {
   cardiac::Scenario scenario = io::loadScenario("normal");
-  scenario.geometry.inflowVesselLength = pbd::Real(0.06);
-  scenario.geometry.outflowVesselLength = pbd::Real(0.05);
-  scenario.geometry.atriumRadius = pbd::Real(0.020);
-  scenario.geometry.aorticSinusRadius = pbd::Real(0.016);
-  scenario.geometry.vesselLeanDeg = pbd::Real(35);
+  scenario.geometry = cardiac::testing::withAnatomicalVessels(scenario.geometry);
   const cardiac::HeartSimulation sim(scenario, 1);
   const std::vector<SceneLabel> labels = anatomyLabels(sim);
   ASSERT_EQ(labels.size(), 9u);
@@ -155,11 +152,7 @@ TEST(SceneLabels, RenderDrawsThemIntoTheImage) {
 // toward it), and the same names drawn without the key do cover it.
 TEST(SceneLabels, NoNameCoversTheColourKey) {
   cardiac::Scenario scenario = io::loadScenario("normal");
-  scenario.geometry.inflowVesselLength = pbd::Real(0.06);
-  scenario.geometry.outflowVesselLength = pbd::Real(0.05);
-  scenario.geometry.atriumRadius = pbd::Real(0.020);
-  scenario.geometry.aorticSinusRadius = pbd::Real(0.016);
-  scenario.geometry.vesselLeanDeg = pbd::Real(35);
+  scenario.geometry = cardiac::testing::withAnatomicalVessels(scenario.geometry);
   const cardiac::HeartSimulation sim(scenario, 1);
   const std::vector<SceneLabel> labels = anatomyLabels(sim);
   const render::Camera camera = render::viewCamera(render::View::Front, render::sceneBounds(sim), 4.0f / 3);
