@@ -1,9 +1,12 @@
 #include "pbd/wall_density.h"
 
 #include "pbd/cell_grid.h"
+#include "pbd/wall_bounds.h"
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <limits>
 #include <cmath>
 #include <numbers>
@@ -87,41 +90,60 @@ class NearestTriangle {
 };
 
 // The nearest wall triangle to p of the candidates of one cell of the grid, from the entries'
-// own box copies: the box distances of a cell's candidates in one vectorised pass over
-// contiguous arrays, then the triangle with the nearest box, then every candidate whose box is not
-// farther than the best so far. The minimum (ties to the lowest id) is the same as over all
-// candidates: the boxes only order and prune.
+// own copies of their triangles' boxes and planes: a lower bound of each candidate's distance
+// (the larger of its box's and its plane's) in one vectorised pass over contiguous arrays, then
+// the triangle with the smallest bound, then every candidate whose bound is not beyond the best so
+// far. The minimum (ties to the lowest id) is the same as over all candidates: the bounds only
+// order and prune.
 WallProximity nearestInCell(const WallTriangleGrid& grid, const std::vector<Vec3>& x,
                             const std::vector<Triangle>& triangles, std::size_t cell, const Vec3& p) {
   const CellGrid& g = grid.grid();
   const Index begin = g.begin(cell);
   const std::size_t n = g.end(cell) - begin;
-  thread_local std::vector<Real> boxDistances;
-  boxDistances.resize(n);
-  {
-    const Real *lx = grid.entryLo(0) + begin, *ly = grid.entryLo(1) + begin, *lz = grid.entryLo(2) + begin;
-    const Real *hx = grid.entryHi(0) + begin, *hy = grid.entryHi(1) + begin, *hz = grid.entryHi(2) + begin;
-    const Real px = p.x(), py = p.y(), pz = p.z();
-    Real* d = boxDistances.data();
-    for (std::size_t k = 0; k < n; ++k) {
-      const Real dx = px - std::min(std::max(px, lx[k]), hx[k]);
-      const Real dy = py - std::min(std::max(py, ly[k]), hy[k]);
-      const Real dz = pz - std::min(std::max(pz, lz[k]), hz[k]);
-      d[k] = dx * dx + dy * dy + dz * dz;
-    }
+  thread_local std::vector<Real> bounds;
+  bounds.resize(n + kWallBoundsPadding);
+  WallBoundsJob job{};
+  for (int a = 0; a < 3; ++a) {
+    job.lo[a] = grid.entryLo(a) + begin;
+    job.hi[a] = grid.entryHi(a) + begin;
   }
+  for (int k = 0; k < 4; ++k) job.plane[k] = grid.entryPlane(k) + begin;
+  job.slack = grid.entrySlack() + begin;
+  job.px = p.x(), job.py = p.y(), job.pz = p.z();
+  job.n = n;
+  const WallBoundsMinimum smallest = wallCandidateBounds(job, bounds.data());
   const Real reach = grid.reach();
-  std::size_t first = n;
-  Real firstBox = reach * reach;
-  for (std::size_t k = 0; k < n; ++k)
-    if (boxDistances[k] < firstBox) firstBox = boxDistances[k], first = k;
-  if (first == n) return {};
+  if (!(smallest.bound < reach * reach)) return {};
   NearestTriangle nearest(x, triangles, p, reach);
   const Index* items = g.items().data() + begin;
-  nearest.offer(items[first]);
-  for (std::size_t k = 0; k < n; ++k)
-    if (k != first && !(boxDistances[k] > nearest.best2())) nearest.offer(items[k]);
+  nearest.offer(items[smallest.first]);
+  // The others in entry order, those whose bound is not beyond the best so far: the bits mark
+  // those not beyond the first's distance (the best only shrinks), checked again when reached.
+  thread_local std::vector<std::uint64_t> within;
+  within.resize(wallCandidateWords(n));
+  wallCandidatesWithin(bounds.data(), n, nearest.best2(), within.data());
+  for (std::size_t w = 0; w < within.size(); ++w)
+    for (std::uint64_t word = within[w]; word != 0; word &= word - 1) {
+      const std::size_t k = 64 * w + std::size_t(std::countr_zero(word));
+      if (k != smallest.first && !(bounds[k] > nearest.best2())) nearest.offer(items[k]);
+    }
   return nearest.result();
+}
+
+// The plane of triangle (a, b, c) as n . x = c0 with n of unit length (zero, and so no bound,
+// for a degenerate triangle), and the slack of its bounds: the rounding of n, of c0, of n . p - c0
+// and of the box's distance for a point p within reach, and of the closest point's own distance,
+// is a few units in the last place of the coordinates' size; a margin of 2^-14 of it (6e-6 m at
+// 0.1 m in float) keeps the bounds below every distance the closest point can compute, and costs
+// no pruning worth having.
+std::array<Real, 5> planeWithSlack(const Vec3& a, const Vec3& b, const Vec3& c, Real reach) {
+  const Real size = a.cwiseAbs().cwiseMax(b.cwiseAbs()).cwiseMax(c.cwiseAbs()).maxCoeff() + 2 * reach;
+  const Real slack = size * Real(1.0 / 16384);
+  const Vec3 cross = (b - a).cross(c - a);
+  const Real length = cross.norm();
+  if (!(length > Real(0)) || !std::isfinite(length)) return {0, 0, 0, 0, slack};
+  const Vec3 n = cross / length;
+  return {n.x(), n.y(), n.z(), n.dot(a), slack};
 }
 
 // Cell coordinates along an axis are capped (a grid this large is never built: the cells are
@@ -144,10 +166,29 @@ constexpr std::ptrdiff_t kParallelEntries = 32768;
 
 }  // namespace
 
+#ifndef HS_HAVE_HIGHWAY
+WallBoundsMinimum wallCandidateBounds(const WallBoundsJob& job, Real* out) {
+  WallBoundsMinimum smallest{std::numeric_limits<Real>::infinity(), job.n};
+  for (std::size_t k = 0; k < job.n; ++k) {
+    out[k] = wallCandidateBound(job, k);
+    if (out[k] < smallest.bound) smallest = {out[k], k};
+  }
+  for (std::size_t k = job.n; k < job.n + kWallBoundsPadding; ++k) out[k] = std::numeric_limits<Real>::infinity();
+  return smallest;
+}
+
+void wallCandidatesWithin(const Real* bounds, std::size_t n, Real threshold, std::uint64_t* words) {
+  std::fill(words, words + wallCandidateWords(n), std::uint64_t(0));
+  for (std::size_t k = 0; k < n; ++k)
+    if (bounds[k] <= threshold) words[k / 64] |= std::uint64_t(1) << (k % 64);
+}
+#endif
+
 void WallTriangleGrid::update(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles, Real reach,
                               int threads) {
   m_reach = reach;
   m_boxes.resize(triangles.size());
+  m_planes.resize(triangles.size());
   // The boxes in fixed chunks (min and max are exact in any order), in parallel on large walls.
   constexpr std::ptrdiff_t kChunks = 8;
   std::array<Vec3, kChunks> chunkLo, chunkHi;
@@ -162,6 +203,7 @@ void WallTriangleGrid::update(const std::vector<Vec3>& vertices, const std::vect
       const Triangle& v = triangles[t];
       m_boxes[t] = {vertices[v[0]].cwiseMin(vertices[v[1]]).cwiseMin(vertices[v[2]]),
                     vertices[v[0]].cwiseMax(vertices[v[1]]).cwiseMax(vertices[v[2]])};
+      m_planes[t] = planeWithSlack(vertices[v[0]], vertices[v[1]], vertices[v[2]], reach);
       lo = lo.cwiseMin(m_boxes[t][0]);
       hi = hi.cwiseMax(m_boxes[t][1]);
     }
@@ -188,17 +230,29 @@ void WallTriangleGrid::update(const std::vector<Vec3>& vertices, const std::vect
   }, kCellsPerTriangle);
   if (!binned) throw std::length_error("findNearestWalls: too many triangle entries for the cell grid");
   const std::vector<Index>& items = m_grid.items();
+  // Every array padded with zeros past its last entry for the SIMD pass (wall_bounds.h).
+  const std::size_t padded = items.size() + kWallBoundsPadding;
+  const auto pad = [&](std::vector<Real>& array) {
+    array.resize(padded);
+    std::fill(array.begin() + std::ptrdiff_t(items.size()), array.end(), Real(0));
+  };
   for (std::size_t a = 0; a < 3; ++a) {
-    m_entryLo[a].resize(items.size());
-    m_entryHi[a].resize(items.size());
+    pad(m_entryLo[a]);
+    pad(m_entryHi[a]);
   }
+  for (std::vector<Real>& component : m_entryPlane) pad(component);
+  pad(m_entrySlack);
   const auto entries = std::ptrdiff_t(items.size());
 #pragma omp parallel for schedule(static) num_threads(threads) if (entries >= kParallelEntries)
-  for (std::ptrdiff_t e = 0; e < entries; ++e)
+  for (std::ptrdiff_t e = 0; e < entries; ++e) {
+    const std::size_t entry = std::size_t(e), t = items[entry];
     for (std::size_t a = 0; a < 3; ++a) {
-      m_entryLo[a][std::size_t(e)] = m_boxes[items[std::size_t(e)]][0][int(a)];
-      m_entryHi[a][std::size_t(e)] = m_boxes[items[std::size_t(e)]][1][int(a)];
+      m_entryLo[a][entry] = m_boxes[t][0][int(a)];
+      m_entryHi[a][entry] = m_boxes[t][1][int(a)];
     }
+    for (std::size_t k = 0; k < 4; ++k) m_entryPlane[k][entry] = m_planes[t][k];
+    m_entrySlack[entry] = m_planes[t][4];
+  }
 }
 
 void findNearestWalls(const WallTriangleGrid& grid, const std::vector<Vec3>& vertices,

@@ -64,19 +64,29 @@ class WallTriangleGrid {
   // a cell's candidates' boxes as contiguous arrays, read by a loop the compiler vectorises.
   [[nodiscard]] const Real* entryLo(int axis) const { return m_entryLo[std::size_t(axis)].data(); }
   [[nodiscard]] const Real* entryHi(int axis) const { return m_entryHi[std::size_t(axis)].data(); }
+  // Per grid entry, its triangle's plane n . x = c (component 0-2 of n, then c; n of unit length,
+  // zero for a degenerate triangle) with its slack: |n . p - c| - slack is a lower bound of the
+  // distance from p to the triangle whatever the rounding (see planeSlack in the .cpp).
+  [[nodiscard]] const Real* entryPlane(int component) const { return m_entryPlane[std::size_t(component)].data(); }
+  [[nodiscard]] const Real* entrySlack() const { return m_entrySlack.data(); }
 
  private:
   CellIndexing m_cells;
   CellGrid m_grid;
   std::vector<std::array<Vec3, 2>> m_boxes;  // each triangle's box
   std::array<std::vector<Real>, 3> m_entryLo, m_entryHi;
+  std::vector<std::array<Real, 5>> m_planes;  // each triangle's n, c and slack
+  std::array<std::vector<Real>, 4> m_entryPlane;
+  std::vector<Real> m_entrySlack;
   Real m_reach = 0;
   bool m_valid = false;
 };
 
 // For each point, the closest point on the triangles within the grid's reach (closest point on
-// each triangle near it, Ericson 5.1.5), from the triangles listed in the point's cell; the
-// triangle with the nearest box is tried first, so that most others' boxes are farther than it.
+// each triangle near it, Ericson 5.1.5), from the triangles listed in the point's cell. A
+// triangle is no nearer than its box or its plane: the triangle with the nearest such bound is
+// tried first, and then only those whose bound does not exceed the best distance so far (inside a
+// curved cavity the planes of the nearest triangle's neighbours pass farther than it).
 // The result is the minimum over all triangles (ties to the lowest id) whatever the grid.
 void findNearestWalls(const WallTriangleGrid& grid, const std::vector<Vec3>& vertices,
                       const std::vector<Triangle>& triangles, std::span<const Vec3> points,
