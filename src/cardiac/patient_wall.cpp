@@ -212,7 +212,7 @@ void checkHeartSize(double extent, LengthUnit unit, const std::string& file) {
 }
 
 WallResolution wallResolution(const std::string& name) {
-  if (name == "coarse") return {0.008, 1};
+  if (name == "coarse") return {0.006, 1};
   if (name == "default") return {0.005, 2};
   if (name == "fine") return {0.003, 3};
   throw std::invalid_argument("resolution '" + name + "': expected coarse, default or fine");

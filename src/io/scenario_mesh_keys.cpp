@@ -68,7 +68,7 @@ std::vector<KeySpec> meshModelKeys() {
       choiceKey("model.units", HS_FIELD(patient.units), units,
                 "kind = \"mesh\": the files' length unit; a heart outside 3-30 cm in it is refused."),
       choiceKey("model.mesh_resolution", HS_FIELD(patient.resolution), resolutions,
-                "kind = \"mesh\": the wall's edge length: \"coarse\" 8 mm (real time), \"default\" 5 mm, "
+                "kind = \"mesh\": the wall's edge length: \"coarse\" 6 mm (real time), \"default\" 5 mm, "
                 "\"fine\" 3 mm; one tet across the wall."),
       vec3Key("model.septum", HS_FIELD(patient.septum), "",
               "kind = \"mesh\": direction toward the septum in the file's frame; [0, 0, 0] = found (from a "
