@@ -65,8 +65,10 @@ class WallTriangleGrid {
   [[nodiscard]] const Real* entryLo(int axis) const { return m_entryLo[std::size_t(axis)].data(); }
   [[nodiscard]] const Real* entryHi(int axis) const { return m_entryHi[std::size_t(axis)].data(); }
   // Per grid entry, its triangle's plane n . x = c (component 0-2 of n, then c; n of unit length,
-  // zero for a degenerate triangle) with its slack: |n . p - c| - slack is a lower bound of the
-  // distance from p to the triangle whatever the rounding (see planeSlack in the .cpp).
+  // zero for a degenerate triangle) and the slack of its bounds: |n . p - c| - slack and the box's
+  // distance less it bound the distance from p to the triangle whatever the rounding
+  // (wall_bounds.h; planeWithSlack in the .cpp). Every entry array has kWallBoundsPadding zeros
+  // after its last entry.
   [[nodiscard]] const Real* entryPlane(int component) const { return m_entryPlane[std::size_t(component)].data(); }
   [[nodiscard]] const Real* entrySlack() const { return m_entrySlack.data(); }
 
