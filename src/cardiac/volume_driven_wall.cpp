@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace hs::cardiac {
 namespace {
@@ -34,6 +35,32 @@ double thicknessKeepingVolume(double A, double C, double W) {
   return 0.5 * (low + high);
 }
 
+// An akinetic segment does not contract, but its border zone, tethered to the beating wall, moves
+// in with it (hypokinesis fading over 1-2 cm; Lima et al. 1985, Circulation 71): a vertex that
+// does not beat takes the beating wall's radial motion scaled by w = 1 - s^2 (3 - 2 s),
+// s = d / (kBorderZone L), d its distance at rest from the nearest beating vertex, L the long
+// axis (15 mm on `normal`). Left to the constraints instead, the seam between a driven and a
+// carried wall folded (anterior-infarct, 79 degrees at one hinge).
+constexpr double kBorderZone = 0.25;
+
+// Per vertex of the myocardium that does not beat: w above; 1 where it beats.
+std::vector<Real> borderZoneWeights(const LvModel& model, const std::vector<std::uint8_t>& beats) {
+  const auto& x = model.mesh.vertices;
+  std::vector<Index> beating;
+  for (std::size_t v = 0; v < x.size(); ++v)
+    if (beats[v] && model.region[v] == Region::Myocardium) beating.push_back(Index(v));
+  const double zone = kBorderZone * double(model.longAxisLength);
+  std::vector<Real> weight(x.size(), Real(1));
+  for (std::size_t v = 0; v < x.size(); ++v) {
+    if (beats[v] || model.region[v] != Region::Myocardium) continue;
+    double nearest = HUGE_VAL;
+    for (Index b : beating) nearest = std::min(nearest, double((x[v] - x[b]).norm()));
+    const double s = std::clamp(nearest / zone, 0.0, 1.0);
+    weight[v] = Real(1 - s * s * (3 - 2 * s));
+  }
+  return weight;
+}
+
 // The endocardium may shrink to this share of its rest radii; the tetrahedra at the apex
 // invert a little beyond it.
 constexpr double kSmallestEndocardium = 0.45;
@@ -58,15 +85,16 @@ VolumeDrivenWall::VolumeDrivenWall(const LvModel& model, const std::vector<Index
     if (model.region[v] == Region::BasePlate) plateTop = std::max(plateTop, double(x[v].y()));
   }
   m_beatingShare = myocardiumShare(model, beating);
+  const std::vector<Real> border = borderZoneWeights(model, beats);
   m_longitudinalTravel = double(settings.longitudinal) * double(model.longAxisLength) * m_beatingShare;
   for (std::size_t v = 0; v < n; ++v) {
     if (pinned[v]) continue;
     Driven d{Index(v), Kind::Base, 1};
     switch (model.region[v]) {
       case Region::Myocardium:
-        if (!beats[v]) continue;  // an akinetic segment is carried, not driven
+        // An akinetic segment descends with the base; its radial motion is its border zone's.
         d.kind = v % 2 == 0 ? Kind::Endocardium : Kind::Epicardium;
-        d.share = radialTaper(x[v].y(), m_rest.endoLong);
+        d.share = radialTaper(x[v].y(), m_rest.endoLong) * border[v];
         break;
       case Region::BasePlate: break;
       case Region::InflowVessel:

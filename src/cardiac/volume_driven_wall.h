@@ -19,10 +19,13 @@
 // The driven vertices are kinematic (their inverse mass is 0 while the lumped circulation
 // drives them): a linear tetrahedron one element thick cannot keep its volume tet by tet while
 // the endocardium shrinks more than the epicardium (volumetric locking), so its constraints
-// would hold the wall back. The parts that do not beat (an akinetic segment) are carried by the
-// wall's constraints, so the cavity's volume V(a) is not known in closed form. Each step a is
-// found by Newton's method on the predicted shape's volume V_p(a) (driven vertices moved,
-// others at rest), corrected by what the constraints did to it in the last step:
+// would hold the wall back. The parts that do not beat (an akinetic segment) descend with the
+// base but take the radial motion only in their border zone, fading with the distance from the
+// beating wall (volume_driven_wall.cpp, kBorderZone). The free vertices (the vessels near their
+// pinned ends, the rims) are left to the constraints, so the cavity's volume V(a) is not known in
+// closed form. Each step a is found by Newton's method on the predicted shape's volume V_p(a)
+// (driven vertices moved, others at rest), corrected by what the constraints did to it in the
+// last step:
 //   V_p(a_n) + (V_measured,n-1 - V_p(a_n-1)) = V_target,n.
 #include <vector>
 
@@ -38,8 +41,9 @@ struct WallMotionSettings {
 
 class VolumeDrivenWall {
  public:
-  // `beating`: model vertices chosen to beat (cycle.segments etc.); only they contract. The
-  // base plate and the vessels descend with the base by the beating share of the myocardium.
+  // `beating`: model vertices chosen to beat (cycle.segments etc.); only they contract (the others
+  // move in only in their border zone). The base plate and the vessels descend with the base by
+  // the beating share of the myocardium.
   VolumeDrivenWall(const LvModel& model, const std::vector<Index>& beating, Index firstParticle,
                    const WallMotionSettings& settings = {});
 

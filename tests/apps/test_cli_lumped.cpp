@@ -156,6 +156,12 @@ TEST_P(PathologyPreset, ShowsItsTextbookSigns) {
   }
   EXPECT_EQ(j.at("blood").at("lost").get<int>(), 0);
   EXPECT_EQ(j.at("blood").at("inside_wall").get<int>(), 0);
+  // The shape held (docs/reliability.md's bounds): anterior-infarct's akinetic border folded by
+  // 73 degrees here when the constraints carried it.
+  const auto& tissue = j.at("tissue");
+  EXPECT_EQ(tissue.at("inverted_tets").get<int>(), 0);
+  EXPECT_LT(tissue.at("worst_tet_volume_error").get<double>(), 0.6);
+  EXPECT_LT(tissue.at("surface_turn_max_deg").get<double>(), 45.0);
 }
 
 // Two presets side by side: two loops on one plot; a scenario without the lumped circulation is
