@@ -54,7 +54,8 @@ struct WallResolution {
   int layers = 2;
 };
 // "coarse" (6 mm, 1 layer: real time; at 8 mm the strip of wall between two annuli as close
-// as biv-me's is one sliver wide, docs/patient-meshes.md), "default" (5 mm, 2 layers), "fine" (3 mm, 3 layers);
+// as biv-me's is one sliver wide, docs/patient-meshes.md), "default" (5 mm, 2 layers), "fine"
+// (3 mm, 3 layers);
 // std::invalid_argument for another name.
 WallResolution wallResolution(const std::string& name);
 

@@ -2,10 +2,11 @@
 // Lower bounds of the distances from a point to the wall triangles a cell of WallTriangleGrid
 // lists (wall_density.h): for each, the larger of the squared distances to its box and to its
 // plane, each less the entry's slack, so that rounding never lifts a bound above the distance
-// the closest point computes (a triangle whose nearest point is a corner of its box). One pass over the entries' contiguous copies, in SIMD with Highway's runtime dispatch
-// where the build has it (wall_bounds_simd.cpp), else the scalar loop below. Both evaluate the
-// same expression operation for operation (min, max, abs and unfused products and sums are exact
-// in any lane width), so the bounds, and the walls found, are bitwise the same either way.
+// the closest point computes (a triangle whose nearest point is a corner of its box). One pass
+// over the entries' contiguous copies, in SIMD with Highway's runtime dispatch where the build
+// has it (wall_bounds_simd.cpp), else the scalar loop in wall_density.cpp. Both evaluate the same
+// expression operation for operation (min, max, abs and unfused products and sums are exact in
+// any lane width), so the bounds, and the walls found, are bitwise the same either way.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -27,7 +28,7 @@ struct WallBoundsJob {
 };
 
 // Extra entries every array of a WallBoundsJob can be read past its last (zeros), so that the
-// SIMD pass runs whole vectors and `out` must hold n rounded up to them.
+// SIMD pass runs whole vectors; `out` holds n plus as many.
 inline constexpr std::size_t kWallBoundsPadding = 16;
 
 // The bound of entry k, as the SIMD pass computes it.
