@@ -1,7 +1,7 @@
 #pragma once
 // Lower bounds of the distances from a point to the wall triangles a cell of WallTriangleGrid
 // lists (wall_density.h): for each, the larger of the squared distances to its box and to its
-// plane, each less the entry's slack, so that rounding never lifts a bound above the distance
+// plane, each less a slack, so that rounding never lifts a bound above the distance
 // the closest point computes (a triangle whose nearest point is a corner of its box). One pass
 // over the entries' contiguous copies, in SIMD with Highway's runtime dispatch where the build
 // has it (wall_bounds_simd.cpp), else the scalar loop in wall_density.cpp. Both evaluate the same
@@ -17,12 +17,13 @@
 
 namespace hs::pbd {
 
-// The entries [0, n) of a cell: box corners per axis, plane n . x = c per component, slack.
+// The entries [0, n) of a cell: box corners per axis, plane n . x = c per component; the slack
+// of every bound.
 struct WallBoundsJob {
   const Real* lo[3];
   const Real* hi[3];
   const Real* plane[4];
-  const Real* slack;
+  Real slack;
   Real px, py, pz;
   std::size_t n;
 };
@@ -34,7 +35,7 @@ inline constexpr std::size_t kWallBoundsPadding = 16;
 // The bound of entry k, as the SIMD pass computes it.
 HS_KERNEL Real wallCandidateBound(const WallBoundsJob& job, std::size_t k) {
   // Each distance less the slack: the box's per axis (the box grown by it), the plane's.
-  const Real slack = job.slack[k];
+  const Real slack = job.slack;
   const auto axis = [&](Real p, Real lo, Real hi) {
     return std::max(std::abs(p - std::min(std::max(p, lo), hi)) - slack, Real(0));
   };

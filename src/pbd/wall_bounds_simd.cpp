@@ -18,12 +18,11 @@ WallBoundsMinimum WallBoundsRange(const WallBoundsJob& job, Real* out) {
   const hn::CappedTag<Real, kWallBoundsPadding> d;
   const std::size_t lanes = hn::Lanes(d);
   const auto px = hn::Set(d, job.px), py = hn::Set(d, job.py), pz = hn::Set(d, job.pz);
-  const auto zero = hn::Zero(d), infinity = hn::Inf(d);
+  const auto zero = hn::Zero(d), infinity = hn::Inf(d), slack = hn::Set(d, job.slack);
   auto minimum = infinity;
   // Whole vectors past n read the arrays' padding (kWallBoundsPadding); their lanes beyond n
   // are stored as +infinity.
   for (std::size_t k = 0; k < job.n; k += lanes) {
-    const auto slack = hn::LoadU(d, job.slack + k);
     const auto axis = [&](auto p, const Real* lo, const Real* hi) {
       const auto outside = hn::Sub(p, hn::Min(hn::Max(p, hn::LoadU(d, lo + k)), hn::LoadU(d, hi + k)));
       return hn::Max(hn::Sub(hn::Abs(outside), slack), zero);

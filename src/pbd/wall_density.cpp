@@ -108,7 +108,7 @@ WallProximity nearestInCell(const WallTriangleGrid& grid, const std::vector<Vec3
     job.hi[a] = grid.entryHi(a) + begin;
   }
   for (int k = 0; k < 4; ++k) job.plane[k] = grid.entryPlane(k) + begin;
-  job.slack = grid.entrySlack() + begin;
+  job.slack = grid.slack();
   job.px = p.x(), job.py = p.y(), job.pz = p.z();
   job.n = n;
   const WallBoundsMinimum smallest = wallCandidateBounds(job, bounds.data());
@@ -131,19 +131,22 @@ WallProximity nearestInCell(const WallTriangleGrid& grid, const std::vector<Vec3
 }
 
 // The plane of triangle (a, b, c) as n . x = c0 with n of unit length (zero, and so no bound,
-// for a degenerate triangle), and the slack of its bounds: the rounding of n, of c0, of n . p - c0
-// and of the box's distance for a point p within reach, and of the closest point's own distance,
-// is a few units in the last place of the coordinates' size; a margin of 2^-14 of it (6e-6 m at
-// 0.1 m in float) keeps the bounds below every distance the closest point can compute, and costs
-// no pruning worth having.
-std::array<Real, 5> planeWithSlack(const Vec3& a, const Vec3& b, const Vec3& c, Real reach) {
-  const Real size = a.cwiseAbs().cwiseMax(b.cwiseAbs()).cwiseMax(c.cwiseAbs()).maxCoeff() + 2 * reach;
-  const Real slack = size * Real(1.0 / 16384);
+// for a degenerate triangle).
+std::array<Real, 4> planeOf(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 cross = (b - a).cross(c - a);
   const Real length = cross.norm();
-  if (!(length > Real(0)) || !std::isfinite(length)) return {0, 0, 0, 0, slack};
+  if (!(length > Real(0)) || !std::isfinite(length)) return {0, 0, 0, 0};
   const Vec3 n = cross / length;
-  return {n.x(), n.y(), n.z(), n.dot(a), slack};
+  return {n.x(), n.y(), n.z(), n.dot(a)};
+}
+
+// The slack of the bounds for a wall within the box [lo, hi]: the rounding of a plane's n and c0,
+// of n . p - c0 and of a box's distance for a point p within reach, and of the closest point's own
+// distance, is a few units in the last place of the coordinates' size; a margin of 2^-14 of it
+// (6e-6 m at 0.1 m in float) keeps the bounds below every distance the closest point can compute,
+// and costs no pruning worth having.
+Real boundSlack(const Vec3& lo, const Vec3& hi, Real reach) {
+  return (lo.cwiseAbs().cwiseMax(hi.cwiseAbs()).maxCoeff() + 2 * reach) * Real(1.0 / 16384);
 }
 
 // Cell coordinates along an axis are capped (a grid this large is never built: the cells are
@@ -203,7 +206,7 @@ void WallTriangleGrid::update(const std::vector<Vec3>& vertices, const std::vect
       const Triangle& v = triangles[t];
       m_boxes[t] = {vertices[v[0]].cwiseMin(vertices[v[1]]).cwiseMin(vertices[v[2]]),
                     vertices[v[0]].cwiseMax(vertices[v[1]]).cwiseMax(vertices[v[2]])};
-      m_planes[t] = planeWithSlack(vertices[v[0]], vertices[v[1]], vertices[v[2]], reach);
+      m_planes[t] = planeOf(vertices[v[0]], vertices[v[1]], vertices[v[2]]);
       lo = lo.cwiseMin(m_boxes[t][0]);
       hi = hi.cwiseMax(m_boxes[t][1]);
     }
@@ -213,6 +216,7 @@ void WallTriangleGrid::update(const std::vector<Vec3>& vertices, const std::vect
     lo = lo.cwiseMin(chunkLo[c]);
     hi = hi.cwiseMax(chunkHi[c]);
   }
+  m_slack = boundSlack(lo, hi, reach);
   m_valid = !triangles.empty();
   if (!m_valid) return;
   // Each triangle is binned into every cell its box grown by `reach` touches (the engine's
@@ -241,7 +245,6 @@ void WallTriangleGrid::update(const std::vector<Vec3>& vertices, const std::vect
     pad(m_entryHi[a]);
   }
   for (std::vector<Real>& component : m_entryPlane) pad(component);
-  pad(m_entrySlack);
   const auto entries = std::ptrdiff_t(items.size());
 #pragma omp parallel for schedule(static) num_threads(threads) if (entries >= kParallelEntries)
   for (std::ptrdiff_t e = 0; e < entries; ++e) {
@@ -251,7 +254,6 @@ void WallTriangleGrid::update(const std::vector<Vec3>& vertices, const std::vect
       m_entryHi[a][entry] = m_boxes[t][1][int(a)];
     }
     for (std::size_t k = 0; k < 4; ++k) m_entryPlane[k][entry] = m_planes[t][k];
-    m_entrySlack[entry] = m_planes[t][4];
   }
 }
 

@@ -65,21 +65,21 @@ class WallTriangleGrid {
   [[nodiscard]] const Real* entryLo(int axis) const { return m_entryLo[std::size_t(axis)].data(); }
   [[nodiscard]] const Real* entryHi(int axis) const { return m_entryHi[std::size_t(axis)].data(); }
   // Per grid entry, its triangle's plane n . x = c (component 0-2 of n, then c; n of unit length,
-  // zero for a degenerate triangle) and the slack of its bounds: |n . p - c| - slack and the box's
-  // distance less it bound the distance from p to the triangle whatever the rounding
-  // (wall_bounds.h; planeWithSlack in the .cpp). Every entry array has kWallBoundsPadding zeros
-  // after its last entry.
+  // zero for a degenerate triangle). Every entry array has kWallBoundsPadding zeros after its
+  // last entry.
   [[nodiscard]] const Real* entryPlane(int component) const { return m_entryPlane[std::size_t(component)].data(); }
-  [[nodiscard]] const Real* entrySlack() const { return m_entrySlack.data(); }
+  // The slack of every bound: |n . p - c| - slack and the box's distance less it bound the
+  // distance from p to a triangle whatever the rounding (wall_bounds.h; boundSlack in the .cpp).
+  [[nodiscard]] Real slack() const { return m_slack; }
 
  private:
   CellIndexing m_cells;
   CellGrid m_grid;
   std::vector<std::array<Vec3, 2>> m_boxes;  // each triangle's box
   std::array<std::vector<Real>, 3> m_entryLo, m_entryHi;
-  std::vector<std::array<Real, 5>> m_planes;  // each triangle's n, c and slack
+  std::vector<std::array<Real, 4>> m_planes;  // each triangle's n and c
   std::array<std::vector<Real>, 4> m_entryPlane;
-  std::vector<Real> m_entrySlack;
+  Real m_slack = 0;
   Real m_reach = 0;
   bool m_valid = false;
 };

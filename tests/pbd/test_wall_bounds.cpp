@@ -51,7 +51,7 @@ Sphere sphere(const Vec3& centre, Real radius, int rings, int sectors) {
 
 // Entries of random boxes and planes, as a grid cell lists them, plus the padding.
 struct Entries {
-  std::vector<Real> lo[3], hi[3], plane[4], slack;
+  std::vector<Real> lo[3], hi[3], plane[4];
   std::vector<Triangle> triangles;
   std::vector<Vec3> x;
 };
@@ -71,10 +71,9 @@ Entries randomEntries(std::size_t n, std::mt19937& rng) {
       e.plane[k].push_back(normal[k]);
     }
     e.plane[3].push_back(normal.dot(a));
-    e.slack.push_back(Real(1e-6));
   }
   for (auto* array : {&e.lo[0], &e.lo[1], &e.lo[2], &e.hi[0], &e.hi[1], &e.hi[2], &e.plane[0], &e.plane[1],
-                      &e.plane[2], &e.plane[3], &e.slack})
+                      &e.plane[2], &e.plane[3]})
     array->resize(n + kWallBoundsPadding, Real(0));
   return e;
 }
@@ -86,7 +85,7 @@ WallBoundsJob jobOf(const Entries& e, std::size_t n, const Vec3& p) {
     job.hi[k] = e.hi[k].data();
   }
   for (int k = 0; k < 4; ++k) job.plane[k] = e.plane[k].data();
-  job.slack = e.slack.data();
+  job.slack = Real(1e-6);
   job.px = p.x(), job.py = p.y(), job.pz = p.z();
   job.n = n;
   return job;
