@@ -464,14 +464,16 @@ bool HeartSimulation::wallCanYield() const {
 double HeartSimulation::vesselFill() const {
   if (!m_circulation) return 1;
   const BloodSettings& b = m_scenario.blood;
+  // With the lumped circulation the base has carried the vessels' roots down.
+  const VesselSites sites =
+      m_lumped ? m_vesselSites.descended(m_model->flowPath, Real(m_lastBaseDescent)) : m_vesselSites;
   // Blood farther below the lowest site than a kernel support adds nothing to any site.
   std::vector<Vec3> blood;
   for (std::size_t i = m_firstBloodParticle; i < m_particles.size(); ++i)
-    if (m_particles.active(i) && m_particles.position[i].y() >= m_vesselSites.lowest - b.supportRadius)
+    if (m_particles.active(i) && m_particles.position[i].y() >= sites.lowest - b.supportRadius)
       blood.push_back(m_particles.position[i]);
-  const double inflow = vesselFillShare(m_vesselSites.inflow, m_vesselSites.inflowFull, blood, b.spacing, b.supportRadius);
-  const double outflow =
-      vesselFillShare(m_vesselSites.outflow, m_vesselSites.outflowFull, blood, b.spacing, b.supportRadius);
+  const double inflow = vesselFillShare(sites.inflow, sites.inflowFull, blood, b.spacing, b.supportRadius);
+  const double outflow = vesselFillShare(sites.outflow, sites.outflowFull, blood, b.spacing, b.supportRadius);
   return std::min(inflow, outflow);
 }
 

@@ -23,33 +23,72 @@ std::vector<Vec3> lumenColumn(const Orifice& lumen, Real first, Real top, Real r
   return out;
 }
 
+// Sites across a lobed section (the sinuses of Valsalva) at height y: the axis, then n rings
+// that each follow the lumen's shape, ring k at k/n of the reach rho(th) = radius(th) - r (n
+// the mean reach in spacings), each with sites a spacing apart along its own length; `turned`
+// turns them by half a site. Like lumenDiscSites for a round lumen: one site per d^2, out to a
+// particle radius from the wall at every azimuth, with no gap between the lobes for blood to
+// spread into (a round disc cut at the lobes' radius leaves half the sinuses empty).
+std::vector<Vec3> lobedDiscSites(const Orifice& section, Real y, const std::function<double(double)>& reach, Real d,
+                                 bool turned) {
+  constexpr int kSamples = 720;
+  const Vec3 centre(section.centre.x(), y, section.centre.z());
+  std::vector<double> rho(kSamples + 1);
+  double mean = 0;
+  for (int j = 0; j <= kSamples; ++j) {
+    rho[j] = std::max(0.0, reach(2 * std::numbers::pi * j / kSamples));
+    if (j < kSamples) mean += rho[j] / kSamples;
+  }
+  std::vector<Vec3> sites{centre};
+  const int rings = mean > 0 ? std::max(1, int(std::lround(mean / double(d)))) : 0;
+  std::vector<double> along(kSamples + 1, 0.0);  // the ring's length from th = 0 to sample j
+  auto at = [&](double share, double theta, double radius) -> Vec3 {
+    const Vec3 offset(Real(share * radius * std::cos(theta)), 0, Real(share * radius * std::sin(theta)));
+    return centre + offset;
+  };
+  for (int k = 1; k <= rings; ++k) {
+    const double share = double(k) / rings;
+    for (int j = 1; j <= kSamples; ++j) {
+      const double t0 = 2 * std::numbers::pi * (j - 1) / kSamples, t1 = 2 * std::numbers::pi * j / kSamples;
+      along[j] = along[j - 1] + double((at(share, t1, rho[j]) - at(share, t0, rho[j - 1])).norm());
+    }
+    const int count = std::max(1, int(std::lround(along[kSamples] / double(d))));
+    int j = 1;
+    for (int m = 0; m < count; ++m) {
+      const double target = along[kSamples] * (m + (turned ? 0.5 : 0.0)) / count;
+      while (j < kSamples && along[j] < target) ++j;
+      const double f = (target - along[j - 1]) / std::max(along[j] - along[j - 1], 1e-300);
+      const double theta = 2 * std::numbers::pi * (j - 1 + f) / kSamples;
+      sites.push_back(at(share, theta, rho[j - 1] + f * (rho[j] - rho[j - 1])));
+    }
+  }
+  return sites;
+}
+
 // The sites of a procedural vessel's lumen from `first` up to a particle radius under its far
-// end, a layer a spacing: about the lumen's axis at each height, the disc a straight vessel of the
-// orifice's radius would hold (lumenDiscSites), then rings a spacing apart beyond it, each site
-// kept where it is a particle radius inside the lumen's own radius at its azimuth
-// (vessel_shape.h: the sinuses' lobes, the atrium). A straight vessel's is lumenColumn's.
+// end, a layer a spacing: at each height the disc of the lumen's radius there (lumenDiscSites:
+// rings evenly out to a particle radius from the wall, so an atrium's bulb fills as a straight
+// vessel does), or where the sinuses bulge, rings that follow their lobes (lobedDiscSites).
+// Where the vessel does not bulge this is the straight vessel's disc, and a straight vessel's
+// column is lumenColumn's.
 std::vector<Vec3> vesselColumn(const FlowPath& path, bool inflow, Real first, Real r, Real d) {
   const Orifice& orifice = inflow ? path.mitral : path.aortic;
   const Real top = inflow ? path.inflowTop : path.outflowTop;
   const VesselShape& shape = inflow ? path.inflowShape : path.outflowShape;
   if (shape.straight()) return lumenColumn(orifice, first, top, r, d);
   std::vector<Vec3> out;
-  const Real core = orifice.radius - r;
   int layer = 0;
   for (Real y = first; y <= top - r + Real(1e-6) * d; y = first + Real(++layer) * d) {
     const Orifice section = inflow ? path.inflowSection(y) : path.outflowSection(y);
-    const bool turned = layer % 2 == 1;
-    for (const Vec3& site : lumenDiscSites(section, y, core, d, turned)) out.push_back(site);
     const double u = FlowPath::heightShare(orifice, top, y);
-    const Vec3 centre(section.centre.x(), y, section.centre.z());
-    for (Real rho = core + d; rho <= section.radius - r + Real(1e-6) * d; rho += d) {
-      const int count = std::max(1, int(std::lround(2 * std::numbers::pi_v<Real> * rho / d)));
-      for (int j = 0; j < count; ++j) {
-        const double theta = 2 * std::numbers::pi * (j + (turned ? 0.5 : 0.0)) / count;
-        if (double(rho) <= shape.radius(u, theta, double(orifice.radius)) - double(r) + 1e-6 * double(d))
-          out.push_back(centre + rho * Vec3(Real(std::cos(theta)), 0, Real(std::sin(theta))));
-      }
-    }
+    const bool turned = layer % 2 == 1;
+    const std::vector<Vec3> disc =
+        shape.lobes > 0 && shape.bulge(u) > 0
+            ? lobedDiscSites(section, y,
+                             [&](double theta) { return shape.radius(u, theta, double(orifice.radius)) - double(r); }, d,
+                             turned)
+            : lumenDiscSites(section, y, section.radius - r, d, turned);
+    out.insert(out.end(), disc.begin(), disc.end());
   }
   return out;
 }
@@ -170,6 +209,21 @@ void VesselSites::drop(const std::function<bool(const Vec3&)>& dropped) {
   };
   filter(inflow, inflowFull);
   filter(outflow, outflowFull);
+}
+
+VesselSites VesselSites::descended(const FlowPath& path, Real descent) const {
+  VesselSites moved = *this;
+  const FlowPath low = path.descended(descent);
+  auto carry = [](std::vector<Vec3>& sites, const Orifice& rest, const Orifice& now, Real top) {
+    for (Vec3& site : sites) {
+      const double u = FlowPath::heightShare(rest, top, site.y());
+      site.y() = now.centre.y() + Real(u * double(top - now.centre.y()));
+    }
+  };
+  carry(moved.inflow, path.mitral, low.mitral, path.inflowTop);
+  carry(moved.outflow, path.aortic, low.aortic, path.outflowTop);
+  moved.lowest -= descent;
+  return moved;
 }
 
 std::vector<Vec3> heartSites(const Scenario& scenario, const LvModel& model) {

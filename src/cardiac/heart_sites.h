@@ -32,6 +32,12 @@ struct VesselSites {
   Real lowest = 0;  // y of the lowest site of either
   // Leaves out the sites where `dropped` holds, with their colours.
   void drop(const std::function<bool(const Vec3&)>& dropped);
+  // The sites where a base `descent` below rest carries the lumen: each vessel is stretched
+  // between its orifice and its pinned far end, so a site keeps its share u of the vessel's
+  // height (FlowPath::descended, vessel_shape.h) and stays where it was across the lumen. A
+  // straight vessel's sites would stay inside their lumen unmoved; an atrium's or a sinus's,
+  // taken at rest, would end up in the wall.
+  [[nodiscard]] VesselSites descended(const FlowPath& path, Real descent) const;
 };
 VesselSites vesselSites(const Scenario& scenario, const LvModel& model);
 
@@ -49,8 +55,8 @@ std::vector<double> bloodColour(const std::vector<Vec3>& sites, const std::vecto
 // colour when the heart is full at rest). The half level is where SPH puts a liquid's surface
 // (the colour field's iso-surface, Mueller et al. 2003), so the share counts the lumen on the
 // blood's side of its surface: a void a few particles across counts, the gap of one particle
-// moved aside (colour about 0.8 of full) does not. The vessels stay straight and keep their
-// radius while the base descends, so sites taken at rest stay inside their lumen.
+// moved aside (colour about 0.8 of full) does not. Sites taken at rest are first carried where
+// the base has moved the lumen (VesselSites::descended).
 double vesselFillShare(const std::vector<Vec3>& sites, const std::vector<double>& full,
                        const std::vector<Vec3>& blood, Real spacing, Real supportRadius);
 

@@ -23,15 +23,17 @@ VesselEnds::VesselEnds(const FlowPath& path, const BloodSettings& blood)
       m_spacing(blood.spacing),
       m_particleVolume(double(blood.spacing) * double(blood.spacing) * double(blood.spacing)),
       m_inflowArea(std::numbers::pi_v<Real> * path.mitral.radius * path.mitral.radius),
-      m_outflowArea(std::numbers::pi_v<Real> * path.aortic.radius * path.aortic.radius) {
+      m_outflowArea(std::numbers::pi_v<Real> * path.aortic.radius * path.aortic.radius),
+      m_inflowStretch(path.inflowShape.meanAreaShare(double(path.mitral.radius))),
+      m_outflowStretch(path.outflowShape.meanAreaShare(double(path.aortic.radius))) {
   // The layer under the outflow's plug at rest density: lumenDiscSites layers a spacing apart.
   const std::size_t perLayer = lumenDiscSites(path.aortic, 0, path.aortic.radius - blood.radius, blood.spacing, false).size();
   m_restUnderPlug = double(perLayer) * double(m_depth / m_spacing);
 }
 
 void VesselEnds::setFlows(double mitralFlow, double aorticFlow, double descentRate) {
-  m_inflowSpeed = Real(mitralFlow / double(m_inflowArea) + descentRate);
-  m_lumpedOutflowSpeed = Real(aorticFlow / double(m_outflowArea) - descentRate);
+  m_inflowSpeed = Real(mitralFlow / double(m_inflowArea) + descentRate * m_inflowStretch);
+  m_lumpedOutflowSpeed = Real(aorticFlow / double(m_outflowArea) - descentRate * m_outflowStretch);
 }
 
 bool VesselEnds::inInflowBuffer(const Vec3& x) const {

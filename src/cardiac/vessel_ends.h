@@ -9,8 +9,11 @@
 // at free sites (BloodLoop re-entry).
 //
 // The ends' own figures: the vessels' ends are pinned while their roots descend with the base
-// (rate w), so the inflow's end takes in Q_mitral + w A and the outflow's lets out Q_aortic - w A
-// (A the lumen's area, which holds one particle per spacing^2 at rest density).
+// (rate w), so each vessel stretches and gains volume at w A_mean (A_mean its lumen's mean
+// cross-section, VesselShape::meanAreaShare: the end's own area A for a straight vessel, more for
+// an atrium or a root with sinuses). The inflow's end takes in Q_mitral + w A_mean and the
+// outflow's lets out Q_aortic - w A_mean (A the far end's area, which holds one particle per
+// spacing^2 at rest density).
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -57,6 +60,7 @@ class VesselEnds {
   Real m_depth, m_spacing;
   double m_particleVolume;
   Real m_inflowArea, m_outflowArea;
+  double m_inflowStretch, m_outflowStretch;  // A_mean / A of each vessel (1 when straight)
   Real m_inflowSpeed = 0, m_outflowSpeed = 0, m_lumpedOutflowSpeed = 0;
   double m_owed = 0;
   double m_restUnderPlug = 1;  // particles under the outflow's plug at rest density

@@ -61,6 +61,21 @@ struct VesselShape {
     const double lobe = lobes > 0 ? 0.5 * (1 + std::cos(lobes * (theta - lobePhase))) : 1.0;
     return R + (bulgeRadius - R) * b * lobe;
   }
+  // The lumen's mean cross-section over the vessel's height, as a multiple of the orifice's
+  // pi R^2: (1 / pi R^2) int_0^1 int_0^2pi r(u, th)^2 / 2 dth du (midpoint sums, 1 exactly for a
+  // straight vessel). A vessel stretched along its height by the descending base (its vertices
+  // carried by a share 1 - u of the descent) gains volume at w times this mean area.
+  [[nodiscard]] double meanAreaShare(double R) const {
+    if (bulgeRadius == 0) return 1;
+    constexpr int kHeights = 400, kAzimuths = 360;
+    double sum = 0;
+    for (int i = 0; i < kHeights; ++i)
+      for (int j = 0; j < kAzimuths; ++j) {
+        const double r = radius((i + 0.5) / kHeights, 2 * std::numbers::pi * (j + 0.5) / kAzimuths, R) / R;
+        sum += r * r;
+      }
+    return sum / (double(kHeights) * kAzimuths);
+  }
   // The lumen's largest radius at u (m).
   [[nodiscard]] double maxRadius(double u, double R) const { return R + (std::max(bulgeRadius, R) - R) * bulge(u); }
 };

@@ -79,10 +79,13 @@ VolumeDrivenWall::VolumeDrivenWall(const LvModel& model, const std::vector<Index
   std::vector<std::uint8_t> beats(n, 0), pinned(n, 0);
   for (Index v : beating) beats[v] = 1;
   for (Index v : model.pinned) pinned[v] = 1;
-  double plateTop = 0, vesselTop = 0;
+  // Each vessel is stretched between the plate's top and its own far end (the two may differ in
+  // length).
+  double plateTop = 0, inflowTop = 0, outflowTop = 0;
   for (std::size_t v = 0; v < n; ++v) {
-    vesselTop = std::max(vesselTop, double(x[v].y()));
     if (model.region[v] == Region::BasePlate) plateTop = std::max(plateTop, double(x[v].y()));
+    if (model.region[v] == Region::InflowVessel) inflowTop = std::max(inflowTop, double(x[v].y()));
+    if (model.region[v] == Region::OutflowVessel) outflowTop = std::max(outflowTop, double(x[v].y()));
   }
   m_beatingShare = myocardiumShare(model, beating);
   const std::vector<Real> border = borderZoneWeights(model, beats);
@@ -99,7 +102,8 @@ VolumeDrivenWall::VolumeDrivenWall(const LvModel& model, const std::vector<Index
       case Region::BasePlate: break;
       case Region::InflowVessel:
       case Region::OutflowVessel:
-        d = {Index(v), Kind::Vessel, vesselDescentShare(x[v].y(), plateTop, vesselTop)};
+        d = {Index(v), Kind::Vessel,
+             vesselDescentShare(x[v].y(), plateTop, model.region[v] == Region::InflowVessel ? inflowTop : outflowTop)};
         if (d.share == 0) continue;
         break;
     }

@@ -13,6 +13,8 @@
 #include "cardiac/lv_anatomy.h"
 #include "cardiac/lv_model.h"
 #include "cardiac/scenario.h"
+#include "cardiac/vessel_ends.h"
+#include "cardiac/volume_driven_wall.h"
 #include "normal_geometry.h"
 
 namespace hs::cardiac {
@@ -162,6 +164,100 @@ TEST(VesselShape, TheFirstBloodFillsTheBulgesInsideTheirWalls) {
       EXPECT_EQ(path.classify(p, 0, 0), inflow ? FlowRegion::InflowVessel : FlowRegion::OutflowVessel);
     }
   }
+}
+
+// A vessel stretched by the descending base (its vertices carried by a share 1 - u of the
+// descent) gains w A_mean: the shape's mean section, against its closed form. With B = sin^2 over
+// a share s of the height (int B = s / 2, int B^2 = 3 s / 8), k = R_bulge / R - 1 and L the lobes'
+// weight (a round bulb 1; the sinuses' (1 + cos 3 th) / 2: mean 1/2, mean square 3/8):
+//   A_mean / pi R^2 = 1 + 2 k (s / 2) mean(L) + k^2 (3 s / 8) mean(L^2).
+TEST(VesselShape, AStretchedVesselTakesInItsMeanSectionTimesTheDescent) {
+  const FlowPath& path = anatomicalModel().flowPath;
+  auto closedForm = [](const VesselShape& v, double R, double meanL, double meanL2) {
+    const double k = v.bulgeRadius / R - 1, share = v.bulgeTo - v.bulgeFrom;
+    return 1 + 2 * k * (share / 2) * meanL + k * k * (3 * share / 8) * meanL2;
+  };
+  const double atrium = path.inflowShape.meanAreaShare(double(path.mitral.radius));
+  const double root = path.outflowShape.meanAreaShare(double(path.aortic.radius));
+  EXPECT_NEAR(atrium, closedForm(path.inflowShape, double(path.mitral.radius), 1, 1), 1e-4);
+  EXPECT_NEAR(root, closedForm(path.outflowShape, double(path.aortic.radius), 0.5, 0.375), 1e-4);
+  EXPECT_GT(atrium, 1.3);
+  EXPECT_EQ(buildLvModel(normalGeometry()).flowPath.inflowShape.meanAreaShare(0.0125), 1.0);
+  // The ends pass it on: the inflow's plug moves in at Q / A + w A_mean / A, the outflow's out
+  // at Q / A - w A_mean / A.
+  BloodSettings blood;
+  blood.radius = Real(0.0018);
+  blood.spacing = Real(0.0036);
+  blood.supportRadius = Real(0.0072);
+  VesselEnds ends(path, blood);
+  const double w = 0.05;
+  ends.setFlows(0, 0, w);
+  EXPECT_NEAR(double(ends.inflowSpeed()), w * atrium, 1e-6);
+}
+
+// One site per d^2 of the lumen in every layer, the sinuses' lobes and the atrium's bulb
+// included, as in a straight vessel: a layer that held fewer would leave a gap at the wall that
+// the blood spreads into, emptying the lumen's core in the first steps.
+TEST(VesselShape, EveryLayerOfTheBulgesStartsAtRestDensity) {
+  Scenario scenario;
+  scenario.geometry = anatomicalGeometry();
+  scenario.blood.radius = Real(0.0018);
+  scenario.blood.spacing = Real(0.0036);
+  scenario.blood.supportRadius = Real(0.0072);
+  const double d = double(scenario.blood.spacing);
+  const LvModel& model = anatomicalModel();
+  const FlowPath& path = model.flowPath;
+  const VesselSites sites = vesselSites(scenario, model);
+  int layersChecked = 0;
+  for (const bool inflow : {true, false}) {
+    const std::vector<Vec3>& column = inflow ? sites.inflow : sites.outflow;
+    const Orifice& orifice = inflow ? path.mitral : path.aortic;
+    const VesselShape& shape = inflow ? path.inflowShape : path.outflowShape;
+    const Real top = inflow ? path.inflowTop : path.outflowTop;
+    for (std::size_t first = 0; first < column.size();) {
+      std::size_t end = first;
+      while (end < column.size() && column[end].y() == column[first].y()) ++end;
+      const double u = FlowPath::heightShare(orifice, top, column[first].y());
+      if (shape.bulge(u) > 0.5) {
+        double area = 0;  // int r(th)^2 / 2 dth
+        for (int j = 0; j < 3600; ++j)
+          area += 0.5 * std::pow(shape.radius(u, 2 * kPi * (j + 0.5) / 3600, double(orifice.radius)), 2) * 2 * kPi / 3600;
+        const double held = double(end - first), expected = area / (d * d);
+        EXPECT_GT(held, 0.9 * expected) << (inflow ? "atrium" : "root") << " layer at u = " << u;
+        EXPECT_LT(held, 1.15 * expected) << (inflow ? "atrium" : "root") << " layer at u = " << u;
+        ++layersChecked;
+      }
+      first = end;
+    }
+  }
+  EXPECT_GE(layersChecked, 6);
+}
+
+// The fill is measured where the lumen is now: with the base descended the vessels are
+// stretched, and sites taken at rest in a bulge would lie in its wall (or in the narrower vessel
+// above it); carried with the stretch they stay in the lumen.
+TEST(VesselShape, TheFillIsMeasuredWhereTheBaseHasCarriedTheLumen) {
+  Scenario scenario;
+  scenario.geometry = anatomicalGeometry();
+  scenario.blood.radius = Real(0.0018);
+  scenario.blood.spacing = Real(0.0036);
+  scenario.blood.supportRadius = Real(0.0072);
+  const LvModel& model = anatomicalModel();
+  const VesselSites rest = vesselSites(scenario, model);
+  const Real descent = Real(0.015);  // an adult's base descends 12-15 mm in systole
+  const VesselSites moved = rest.descended(model.flowPath, descent);
+  const FlowPath low = model.flowPath.descended(descent);
+  std::size_t restOutside = 0;
+  for (const bool inflow : {true, false}) {
+    const FlowRegion region = inflow ? FlowRegion::InflowVessel : FlowRegion::OutflowVessel;
+    const std::vector<Vec3>& now = inflow ? moved.inflow : moved.outflow;
+    const std::vector<Vec3>& before = inflow ? rest.inflow : rest.outflow;
+    for (std::size_t k = 0; k < now.size(); ++k) {
+      EXPECT_EQ(low.classify(now[k], 0, 0), region) << "site " << k;
+      restOutside += low.classify(before[k], 0, 0) != region;
+    }
+  }
+  EXPECT_GT(restOutside, 20u) << "sites left at rest would read the wall as empty lumen";
 }
 
 TEST(VesselShape, BadSizesAreRefusedWithTheKeyAndTheReason) {

@@ -3,6 +3,7 @@
 // and its border zone moves in with the beating wall, less with the distance from it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -56,6 +57,35 @@ TEST(VolumeDrivenWall, AnAkineticRegionOnlyMovesInAtItsBorder) {
   EXPECT_LT(coreRadialMax, 1e-6) << "the core does not move in";
   EXPECT_GT(borderRadialMin, 0) << "the border zone moves in";
   EXPECT_GT(beatingRadialMin, 0);
+}
+
+// Each vessel is stretched between the plate and its own far end: an atrium longer than the
+// aortic root must not make the root's top row take the descent the longer vessel spreads over
+// its length. Every vessel tet then changes its volume by at most descent / L (the rows' vertical
+// stretch, L the vessel's height above the plate).
+TEST(VolumeDrivenWall, EachVesselIsStretchedOverItsOwnLength) {
+  const LvModel model = buildLvModel(testing::withAnatomicalVessels(testing::normalGeometry()));
+  ASSERT_NE(model.params.inflowVesselLength, model.params.outflowVesselLength);
+  const auto& x = model.mesh.vertices;
+  std::vector<Index> beating;
+  for (std::size_t v = 0; v < x.size(); ++v)
+    if (model.region[v] == Region::Myocardium) beating.push_back(Index(v));
+  VolumeDrivenWall wall(model, beating, 0);
+  std::vector<Vec3> predicted = x;
+  wall.drive(x, predicted, 0.6 * double(cavityVolume(model, x)));
+  const double descent = wall.baseDescent(wall.contraction());
+  ASSERT_GT(descent, 0.005);
+  const double shorter = double(std::min(model.params.inflowVesselLength, model.params.outflowVesselLength));
+  auto volume = [](const std::vector<Vec3>& p, const pbd::Tet& t) {
+    return double((p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]).dot(p[t[3]] - p[t[0]])) / 6;
+  };
+  double worst = 0;
+  for (const pbd::Tet& t : model.mesh.tets) {
+    bool vessel = true;
+    for (Index v : t) vessel = vessel && (model.region[v] == Region::InflowVessel || model.region[v] == Region::OutflowVessel);
+    if (vessel) worst = std::max(worst, std::abs(volume(predicted, t) / volume(x, t) - 1));
+  }
+  EXPECT_LT(worst, 1.05 * descent / shorter);
 }
 
 }  // namespace
