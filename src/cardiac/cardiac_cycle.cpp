@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+
+#include "cardiac/base_taper.h"
 
 namespace hs::cardiac {
 
@@ -60,19 +63,13 @@ void moveTowardCentre(std::vector<Vec3>& positions, std::vector<Vec3>& predicted
 namespace {
 
 // Physiological systole: each beating particle's prediction is set on its straight path from
-// its anchor to its end-systolic target (rest position moved `contraction` toward the centre,
-// never past it), a fraction travel/contraction of the way. Unlike the incremental move, x
-// stays: the step's velocity (p - x)/dt is then the path's own velocity, and the constraint
-// corrections of one step do not pile up in the next (p is set, not moved).
-void followPath(std::vector<Vec3>& predicted, const BeatingRegion& region, const Vec3& centre, Real contraction) {
+// its anchor to its end-systolic target, a fraction travel/contraction of the way. Unlike the
+// incremental move, x stays: the step's velocity (p - x)/dt is then the path's own velocity,
+// and the constraint corrections of one step do not pile up in the next (p is set, not moved).
+void followPath(std::vector<Vec3>& predicted, const BeatingRegion& region, Real contraction) {
   const Real fraction = contraction > Real(0) ? std::min(Real(1), region.clock.travel() / contraction) : Real(0);
-  for (std::size_t k = 0; k < region.particles.size(); ++k) {
-    const Vec3 toCentre = centre - region.rest[k];
-    const Real distance = toCentre.norm();
-    const Vec3 target =
-        distance > Real(0) ? region.rest[k] + (std::min(contraction, distance) / distance) * toCentre : region.rest[k];
-    predicted[region.particles[k]] = region.anchor[k] + fraction * (target - region.anchor[k]);
-  }
+  for (std::size_t k = 0; k < region.particles.size(); ++k)
+    predicted[region.particles[k]] = region.anchor[k] + fraction * (region.target[k] - region.anchor[k]);
 }
 
 // Physiological relaxation: back from the end-systolic positions to rest along the same smooth
@@ -107,6 +104,56 @@ std::vector<Vec3> restOf(const std::vector<Index>& vertices, const LvModel& mode
   return out;
 }
 
+// Where a systole takes each beating vertex (physiological mode):
+//  * the thesis's push: its rest position moved `contraction` toward the centre, never past it;
+//  * with the base held (cycle.base_held, an adult's procedural heart): each section shrinks
+//    about the long axis (the vertical through the centre) as the lumped circulation's wall's
+//    does, faded to none at the base plane (base_taper.h). The endocardium (even ids) moves in by
+//    `contraction` times its radius over the widest endocardial radius, and its epicardial partner
+//    (the next id) keeps the annulus between them, r_o'^2 = r_o^2 - (r_i^2 - r_i'^2): the wall
+//    thickens as it shortens round, where moving both layers alike, or toward one point, folded
+//    the elongated ventricle (surface turns of 76-118 degrees on `normal`'s sizes).
+std::vector<Vec3> endSystoleTargets(const std::vector<Index>& vertices, const LvModel& model, const Vec3& centre,
+                                    const CycleSettings& cycle, Real widest) {
+  const std::vector<Vec3>& x = model.mesh.vertices;
+  auto radial = [&](const Vec3& p) { return std::hypot(p.x() - centre.x(), p.z() - centre.z()); };
+  auto shrunk = [&](Index endo) {  // the endocardial vertex's radius at end-systole
+    const Real share = baseTaper(x[endo].y(), double(model.longAxisLength)) * cycle.contraction / widest;
+    return radial(x[endo]) * (1 - std::min(share, Real(1)));
+  };
+  std::vector<Vec3> out;
+  out.reserve(vertices.size());
+  for (Index v : vertices) {
+    const Vec3& rest = x[v];
+    if (cycle.baseHeld) {
+      const Real r = radial(rest);
+      Real now = shrunk(v - v % 2);
+      if (v % 2 == 1) {  // the epicardium keeps the wall's section: r_o'^2 = r_o^2 - (r_i^2 - r_i'^2)
+        const Real inner = radial(x[v - 1]);
+        now = std::sqrt(std::max(r * r - (inner * inner - now * now), Real(0)));
+      }
+      const Real scale = r > 0 ? now / r : Real(1);
+      out.push_back(Vec3(centre.x() + scale * (rest.x() - centre.x()), rest.y(), centre.z() + scale * (rest.z() - centre.z())));
+      continue;
+    }
+    const Vec3 toCentre = centre - rest;
+    const Real distance = toCentre.norm();
+    out.push_back(distance > Real(0) ? rest + (std::min(cycle.contraction, distance) / distance) * toCentre : rest);
+  }
+  return out;
+}
+
+// The widest endocardial radius (even ids: the procedural shell's inner layer) about the long
+// axis, the vertical through the centre.
+Real widestEndocardium(const std::vector<Index>& vertices, const LvModel& model, const Vec3& centre) {
+  Real widest = 0;
+  for (Index v : vertices) {
+    const Vec3& x = model.mesh.vertices[v - v % 2];
+    widest = std::max(widest, std::hypot(x.x() - centre.x(), x.z() - centre.z()));
+  }
+  return std::max(widest, std::numeric_limits<Real>::min());
+}
+
 std::vector<Index> toParticles(const std::vector<Index>& vertices, Index first) {
   std::vector<Index> out(vertices);
   for (Index& v : out) v += first;
@@ -130,8 +177,14 @@ CardiacCycle::CardiacCycle(const CycleSettings& cycle, const LvModel& model, Ind
                                 "selects no wall vertex that can move; expected a sphere that reaches the wall, "
                                 "segments 1-17 or myocardium vertex ids");
   const BeatClockSettings main = clockSettings(cycle);
+  // The shell's layers pair as (2i, 2i + 1) in a procedural heart only.
+  if (cycle.baseHeld && model.flowPath.cavity)
+    throw std::invalid_argument("cycle.base_held: holds the base of a procedural heart (its wall's two layers paired); "
+                                "expected false for a patient's heart (model.kind = \"mesh\")");
+  const Real farthest = widestEndocardium(beating, model, m_centre);
   if (cycle.pattern != BeatPattern::Inconsistent) {
-    m_regions.push_back({toParticles(beating, firstParticle), BeatClock(main), {}, restOf(beating, model), {}});
+    m_regions.push_back({toParticles(beating, firstParticle), BeatClock(main), {}, restOf(beating, model), {},
+                         endSystoleTargets(beating, model, m_centre, cycle, farthest)});
     return;
   }
   // Inconsistent: the listed segments leave the main region and get their own clock, with
@@ -154,8 +207,10 @@ CardiacCycle::CardiacCycle(const CycleSettings& cycle, const LvModel& model, Ind
   other.beats = main.beats > 0 ? std::max(1, int(std::lround(main.beats * double(rate)))) : 0;
   other.startDelay = cycle.inconsistentPhaseOffset;
   const BeatClock offClock(other);
-  m_regions.push_back({toParticles(mainPart, firstParticle), BeatClock(main), {}, restOf(mainPart, model), {}});
-  m_regions.push_back({toParticles(offPart, firstParticle), offClock, {}, restOf(offPart, model), {}});
+  m_regions.push_back({toParticles(mainPart, firstParticle), BeatClock(main), {}, restOf(mainPart, model), {},
+                       endSystoleTargets(mainPart, model, m_centre, cycle, farthest)});
+  m_regions.push_back({toParticles(offPart, firstParticle), offClock, {}, restOf(offPart, model), {},
+                       endSystoleTargets(offPart, model, m_centre, cycle, farthest)});
 }
 
 void CardiacCycle::apply(std::vector<Vec3>& positions, std::vector<Vec3>& predicted, const pbd::StepContext& context) {
@@ -177,7 +232,7 @@ void CardiacCycle::apply(std::vector<Vec3>& positions, std::vector<Vec3>& predic
     }
     region.clock.advance(dt);
     if (phase == Phase::Systole) {
-      followPath(predicted, region, m_centre, m_contraction);
+      followPath(predicted, region, m_contraction);
     } else if (phase == Phase::Diastole && m_relaxationSeconds > 0 && !region.endSystole.empty()) {
       const double elapsed = double(step + 1) * double(dt);
       if (elapsed <= m_relaxationSeconds + 0.5 * double(dt)) relaxPath(predicted, region, elapsed, m_relaxationSeconds);

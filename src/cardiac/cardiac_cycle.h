@@ -29,6 +29,7 @@ struct BeatingRegion {
   std::vector<Vec3> anchor;      // physiological mode: positions when the systole began
   std::vector<Vec3> rest;        // physiological mode: rest positions (the model's vertices)
   std::vector<Vec3> endSystole;  // physiological mode: positions when the diastole began
+  std::vector<Vec3> target;      // physiological mode: end-systolic positions (endSystoleTargets)
 };
 
 // Model vertices chosen to beat: the union of segments, vertex ids and sphere; all myocardium

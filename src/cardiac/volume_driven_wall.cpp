@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "cardiac/base_taper.h"
+
 namespace hs::cardiac {
 namespace {
 
@@ -11,14 +13,6 @@ namespace {
 // stretched, not moved as a whole).
 Real vesselDescentShare(Real y, double plateTop, double vesselTop) {
   return Real(std::clamp(1 - (double(y) - plateTop) / std::max(vesselTop - plateTop, 1e-12), 0.0, 1.0));
-}
-
-// The base ring is held by the fibrous base plate, which does not shorten: the radial motion
-// fades from the mid-ventricle (a third of the long axis below the base) to none at the base
-// plane, smoothly (s^2 (3 - 2 s)), so the plate's rim is not crushed.
-Real radialTaper(Real y, double endoLongAxis) {
-  const double s = std::clamp(-double(y) / (endoLongAxis / 3), 0.0, 1.0);
-  return Real(s * s * (3 - 2 * s));
 }
 
 // The wall thickness h' that keeps the wall's volume inside an epicardium of radii (A, C):
@@ -97,7 +91,8 @@ VolumeDrivenWall::VolumeDrivenWall(const LvModel& model, const std::vector<Index
       case Region::Myocardium:
         // An akinetic segment descends with the base; its radial motion is its border zone's.
         d.kind = v % 2 == 0 ? Kind::Endocardium : Kind::Epicardium;
-        d.share = radialTaper(x[v].y(), m_rest.endoLong) * border[v];
+        // The radial motion fades to none at the base plane (base_taper.h).
+        d.share = baseTaper(x[v].y(), m_rest.endoLong) * border[v];
         break;
       case Region::BasePlate: break;
       case Region::InflowVessel:

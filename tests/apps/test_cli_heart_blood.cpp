@@ -73,8 +73,8 @@ INSTANTIATE_TEST_SUITE_P(CliHeartBlood, PaperScenario,
                                            "paper-chamber-beating"),
                          testName);
 
-// The physiological scenarios start: real size (a cavity of about 128 mL), 4,200 particles
-// filling the cavity and both vessels, the first systole under way after 0.2 s.
+// The physiological scenarios start: real size (a cavity of about 127 mL), 4,600 particles
+// filling the cavity, the atrium and the aorta, the first systole under way after 0.2 s.
 TEST(CliHeartBlood, PhysiologicalScenariosStartAtRealSize) {
   for (const std::string name : {"normal", "irregular", "inconsistent"}) {
     SCOPED_TRACE(name);
@@ -82,9 +82,9 @@ TEST(CliHeartBlood, PhysiologicalScenariosStartAtRealSize) {
     const CliResult r = runHeartsim("run " + name + " --duration 0.2 --threads 2 --json --out out", dir);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const nlohmann::json j = nlohmann::json::parse(r.out);
-    EXPECT_EQ(j.at("blood").at("particles").get<int>(), 4200);
+    EXPECT_EQ(j.at("blood").at("particles").get<int>(), 4600);
     EXPECT_EQ(j.at("blood").at("lost").get<int>(), 0);
-    EXPECT_NEAR(j.at("cavity").at("volume_rest_m3").get<double>() * 1e6, 128, 5);
+    EXPECT_NEAR(j.at("cavity").at("volume_rest_m3").get<double>() * 1e6, 127, 5);
     std::istringstream csv(readFile(dir / "out" / "metrics.csv"));
     std::string header, row, last;
     std::getline(csv, header);
@@ -196,14 +196,14 @@ TEST(CliHeartBlood, NormalGivesTheSameStateForOneAndTwoThreads) {
   EXPECT_EQ(hashes[0], hashes[1]);
 }
 
-// A real-size heart started from its chamber: the chamber holds fewer than the scenario's 4,200
+// A real-size heart started from its chamber: the chamber holds fewer than the scenario's 4,600
 // particles, the rest wait in the body and enter through the inflow vessel (the closed loop).
 TEST(CliHeartBlood, AChamberStartKeepsEveryParticleTheChamberCannotHold) {
   const auto dir = scratchDir("chamber_start");
   const CliResult r = runHeartsim("run normal --set blood.start=chamber --duration 0.02 --threads 1 --json", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const nlohmann::json blood = nlohmann::json::parse(r.out).at("blood");
-  EXPECT_EQ(blood.at("particles").get<int>(), 4200);
+  EXPECT_EQ(blood.at("particles").get<int>(), 4600);
   EXPECT_EQ(blood.at("lost").get<int>(), 0);
   EXPECT_EQ(blood.at("inside_wall").get<int>(), 0);
   // Without the closed loop nothing can wait: a chamber too small is refused, naming its size.

@@ -7,6 +7,7 @@
 #include "cardiac/beat_metrics.h"
 #include "cardiac/cardiac_cycle.h"
 #include "cardiac/heart_simulation.h"
+#include "normal_geometry.h"
 
 namespace hs::cardiac {
 namespace {
@@ -187,6 +188,48 @@ TEST(BeatingRegion, ARegionThatSelectsNoVertexIsRefused) {
   }
   c.enabled = false;  // nothing beats anyway: accepted
   EXPECT_NO_THROW(CardiacCycle(c, model(), 0));
+}
+
+// The own cycle on an adult's heart (cycle.base_held): each section shrinks about the long axis,
+// the base ring does not move, and each epicardial vertex keeps the wall's section with its
+// endocardial partner, r_o'^2 - r_i'^2 = r_o^2 - r_i^2, so the wall thickens; heights stay.
+TEST(BeatingRegion, AHeldBaseShrinksTheSectionsAboutTheAxisAndThickensTheWall) {
+  const LvModel adult = buildLvModel(testing::normalGeometry());
+  CycleSettings c;
+  c.mode = TimingMode::Physiological;
+  c.contraction = Real(0.0095);
+  c.baseHeld = true;
+  const CardiacCycle cycle(c, adult, 0);
+  const BeatingRegion& region = cycle.regions().front();
+  const Vec3& centre = cycle.centre();
+  auto radial = [&](const Vec3& p) { return std::hypot(double(p.x() - centre.x()), double(p.z() - centre.z())); };
+  std::vector<int> slot(adult.mesh.vertices.size(), -1);
+  for (std::size_t k = 0; k < region.particles.size(); ++k) slot[region.particles[k]] = int(k);
+  int rim = 0, pairs = 0;
+  double deepest = 0;
+  for (std::size_t k = 0; k < region.particles.size(); ++k) {
+    const Vec3& rest = region.rest[k];
+    const Vec3& end = region.target[k];
+    EXPECT_EQ(end.y(), rest.y());
+    EXPECT_LE(radial(end), radial(rest) + 1e-9);
+    if (rest.y() >= 0) {
+      EXPECT_LT((end - rest).norm(), 1e-9) << "the base ring is held";
+      ++rim;
+    }
+    const Index v = region.particles[k];
+    if (v % 2 == 1 && slot[v - 1] >= 0 && radial(region.rest[slot[v - 1]]) > 1e-3) {
+      const double ri = radial(region.rest[slot[v - 1]]), ri2 = radial(region.target[slot[v - 1]]);
+      const double ro = radial(rest), ro2 = radial(end);
+      EXPECT_NEAR(ro2 * ro2 - ri2 * ri2, ro * ro - ri * ri, 1e-9) << "vertex " << v;
+      EXPECT_GT(ro2 - ri2, ro - ri - 1e-9) << "the wall thickens";
+      ++pairs;
+    }
+    if (v % 2 == 0) deepest = std::max(deepest, radial(rest) - radial(end));
+  }
+  EXPECT_GT(rim, 0);
+  EXPECT_GT(pairs, 100);
+  EXPECT_LE(deepest, double(c.contraction) + 1e-9);
+  EXPECT_GT(deepest, 0.5 * double(c.contraction));
 }
 
 }  // namespace

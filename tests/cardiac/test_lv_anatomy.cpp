@@ -9,7 +9,8 @@
 namespace hs::cardiac {
 namespace {
 
-using testing::normalGeometry;
+// normal's sizes with straight vessels: the root's diameter is the annulus's.
+LvGeometryParams normalGeometry() { return testing::withStraightVessels(testing::normalGeometry()); }
 
 // A ring of N vertices on its lumen's circle encloses the regular N-gon's area,
 // N/2 r^2 sin(2 pi / N): a little below the disc's (4.72 cm^2 for normal's 4.91 cm^2 mitral).

@@ -64,7 +64,7 @@ TEST(VolumeDrivenWall, AnAkineticRegionOnlyMovesInAtItsBorder) {
 // its length. Every vessel tet then changes its volume by at most descent / L (the rows' vertical
 // stretch, L the vessel's height above the plate).
 TEST(VolumeDrivenWall, EachVesselIsStretchedOverItsOwnLength) {
-  const LvModel model = buildLvModel(testing::withAnatomicalVessels(testing::normalGeometry()));
+  const LvModel model = buildLvModel(testing::normalGeometry());
   ASSERT_NE(model.params.inflowVesselLength, model.params.outflowVesselLength);
   const auto& x = model.mesh.vertices;
   std::vector<Index> beating;

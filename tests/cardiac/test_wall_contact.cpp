@@ -1,6 +1,6 @@
 // The blood's wall contact on the real-size `normal` heart (scenarios/normal.toml's geometry:
-// 2 mm vessel walls): blood next to a vessel's wall shot outward at 40 mm a step (20 wall
-// thicknesses, ten times the aortic jet's step at dt = 1 ms) never ends on the wall's other
+// 1.2 mm walls round the atrium and the aortic root): blood next to a vessel's wall shot outward
+// at 40 mm a step (33 wall thicknesses, ten times the aortic jet's step at dt = 1 ms) never ends on the wall's other
 // side with blood.wall_contact = "continuous" (the thesis's push-out, then the swept check,
 // pbd/swept_contact.h), for many directions and positions; with "thesis" (the push-out alone)
 // some of the same shots go through: the control that shows the test can fail.
@@ -49,11 +49,19 @@ Outcome shootAtVesselWalls(Real step, bool continuous, unsigned seed) {
   std::uniform_real_distribution<Real> angle(0, 2 * std::numbers::pi_v<Real>), height(Real(0.008), Real(0.02)),
       up(Real(-0.18), Real(0.18)), side(Real(-0.55), Real(0.55));
   std::vector<FlowRegion> origin;
-  for (const Orifice* vessel : {&model.flowPath.mitral, &model.flowPath.aortic}) {
+  const FlowPath& path = model.flowPath;
+  for (const bool inflow : {true, false}) {
+    const Orifice& vessel = inflow ? path.mitral : path.aortic;
+    const VesselShape& shape = inflow ? path.inflowShape : path.outflowShape;
     for (int k = 0; k < 300; ++k) {
-      const Real a = angle(rng);
+      const Real a = angle(rng), y = height(rng);
       const Vec3 out(std::cos(a), 0, std::sin(a)), around(-std::sin(a), 0, std::cos(a));
-      const Vec3 start = Vec3(vessel->centre.x(), height(rng), vessel->centre.z()) + (vessel->radius - kRadius) * out;
+      // A radius inside the lumen at this height and azimuth (the atrium widens and the root
+      // bulges into its sinuses from about 9 mm above the base; both lean).
+      const Orifice section = inflow ? path.inflowSection(y) : path.outflowSection(y);
+      const double u = FlowPath::heightShare(vessel, inflow ? path.inflowTop : path.outflowTop, y);
+      const Real lumen = Real(shape.radius(u, double(a), double(vessel.radius)));
+      const Vec3 start = Vec3(section.centre.x(), y, section.centre.z()) + (lumen - kRadius) * out;
       const Vec3 direction = (out + up(rng) * Vec3::UnitY() + side(rng) * around).normalized();
       const Index i = particles.add(start, 1, pbd::ParticleKind::Fluid);
       particles.predicted[i] = start + step * direction;

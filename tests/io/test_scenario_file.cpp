@@ -245,6 +245,7 @@ std::vector<KeyCase> everyKeyCase() {
       {"cycle.contraction", "0.2", [](const Scenario& s) { return s.cycle.contraction == Real(0.2); }},
       {"cycle.relaxation_fraction", "0.25",
        [](const Scenario& s) { return s.cycle.relaxationFraction == Real(0.25); }},
+      {"cycle.base_held", "true", [](const Scenario& s) { return s.cycle.baseHeld; }},
       {"cycle.segments", "[1,2,3]",
        [](const Scenario& s) {
          return s.cycle.segments == std::vector<int>{1, 2, 3};

@@ -1,32 +1,34 @@
 #pragma once
-// The real-size hearts' [model] sizes (scenarios/normal.toml), for tests that build the model
-// without reading the scenario.
+// The real-size hearts' [model] sizes (scenarios/normal.toml: an adult's left ventricle with an
+// atrium, an aortic root with sinuses and both vessels leaning apart), for tests that build the
+// model without reading the scenario.
 #include "cardiac/lv_model.h"
 
 namespace hs::cardiac::testing {
 
 inline LvGeometryParams normalGeometry() {
   LvGeometryParams g;
-  g.endoRadius = Real(0.032);
-  g.endoLongAxis = Real(0.06);
+  g.endoRadius = Real(0.0275);
+  g.endoLongAxis = Real(0.081);
   g.wallThickness = Real(0.01);
   g.baseThickness = Real(0.004);
-  g.mitralRadius = Real(0.0125);
+  g.mitralRadius = Real(0.012);
   g.aorticRadius = Real(0.010);
-  g.vesselWallThickness = Real(0.002);
-  g.inflowVesselLength = Real(0.03);
-  g.outflowVesselLength = Real(0.03);
+  g.vesselWallThickness = Real(0.0012);
+  g.inflowVesselLength = Real(0.06);
+  g.outflowVesselLength = Real(0.05);
+  g.atriumRadius = Real(0.020);
+  g.aorticSinusRadius = Real(0.016);
+  g.vesselLeanDeg = Real(40);
   return g;
 }
 
-// The anatomical vessels (docs/lv-model.md) on a heart's sizes: a 32 mm aortic root, a 40 mm
-// atrium, both vessels leaning 35 degrees, 60 and 50 mm long.
-inline LvGeometryParams withAnatomicalVessels(LvGeometryParams g) {
-  g.inflowVesselLength = Real(0.06);
-  g.outflowVesselLength = Real(0.05);
-  g.aorticSinusRadius = Real(0.016);
-  g.atriumRadius = Real(0.020);
-  g.vesselLeanDeg = Real(35);
+// The same sizes with straight vessels (no atrium, no sinuses, no lean): tubes of the orifices'
+// radii, for tests of what holds for any lumen.
+inline LvGeometryParams withStraightVessels(LvGeometryParams g) {
+  g.atriumRadius = 0;
+  g.aorticSinusRadius = 0;
+  g.vesselLeanDeg = 0;
   return g;
 }
 

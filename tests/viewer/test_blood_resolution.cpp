@@ -19,16 +19,16 @@ using R = BloodResolution;
 
 TEST(BloodResolution, EachLevelOfNormalHasItsSpacingRadiusSupportAndCount) {
   const cardiac::Scenario normal = io::loadScenario("normal");
-  ASSERT_EQ(normal.blood.particles, 4200);
+  ASSERT_EQ(normal.blood.particles, 4600);
   ASSERT_NEAR(double(normal.blood.spacing), 0.0036, 1e-9);
   const struct {
     R level;
     double spacing;
     int particles;
-  } expected[] = {{R::Coarse, 0.0036 * std::cbrt(4.0), 1050},
-                  {R::Medium, 0.0036 * std::cbrt(2.0), 2100},
-                  {R::Fine, 0.0036, 4200},
-                  {R::Finest, 0.0036 / std::cbrt(2.0), 8400}};
+  } expected[] = {{R::Coarse, 0.0036 * std::cbrt(4.0), 1150},
+                  {R::Medium, 0.0036 * std::cbrt(2.0), 2300},
+                  {R::Fine, 0.0036, 4600},
+                  {R::Finest, 0.0036 / std::cbrt(2.0), 9200}};
   for (const auto& e : expected) {
     cardiac::Scenario s = normal;
     applyResolution(e.level, s);
@@ -39,7 +39,7 @@ TEST(BloodResolution, EachLevelOfNormalHasItsSpacingRadiusSupportAndCount) {
     EXPECT_EQ(s.blood.particles, e.particles);
     // The same volume of blood: count x spacing^3 as the scenario's, within the count's rounding.
     EXPECT_NEAR(double(s.blood.particles) * std::pow(double(s.blood.spacing), 3),
-                4200 * std::pow(0.0036, 3), 4200 * std::pow(0.0036, 3) * 1e-3);
+                4600 * std::pow(0.0036, 3), 4600 * std::pow(0.0036, 3) * 1e-3);
     // The blood's physics otherwise as the scenario says.
     EXPECT_EQ(s.blood.restDensity, normal.blood.restDensity);
     EXPECT_EQ(s.blood.viscosity, normal.blood.viscosity);
