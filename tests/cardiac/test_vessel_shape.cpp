@@ -33,6 +33,16 @@ const LvModel& anatomicalModel() {
   return model;
 }
 
+// normal's sizes and blood (3.6 mm apart, 1.8 mm radius, 7.2 mm support).
+Scenario anatomicalScenario() {
+  Scenario scenario;
+  scenario.geometry = anatomicalGeometry();
+  scenario.blood.radius = Real(0.0018);
+  scenario.blood.spacing = Real(0.0036);
+  scenario.blood.supportRadius = Real(0.0072);
+  return scenario;
+}
+
 std::string buildError(const LvGeometryParams& g) {
   try {
     (void)buildLvModel(g);
@@ -133,11 +143,7 @@ TEST(VesselShape, TheFlowPathFindsBloodInTheSinusesAndTheAtrium) {
 }
 
 TEST(VesselShape, TheFirstBloodFillsTheBulgesInsideTheirWalls) {
-  Scenario scenario;
-  scenario.geometry = anatomicalGeometry();
-  scenario.blood.radius = Real(0.0018);
-  scenario.blood.spacing = Real(0.0036);
-  scenario.blood.supportRadius = Real(0.0072);
+  const Scenario scenario = anatomicalScenario();
   const LvModel& model = anatomicalModel();
   const VesselSites shaped = vesselSites(scenario, model);
   Scenario straightScenario = scenario;
@@ -184,11 +190,7 @@ TEST(VesselShape, AStretchedVesselTakesInItsMeanSectionTimesTheDescent) {
   EXPECT_EQ(buildLvModel(straightGeometry()).flowPath.inflowShape.meanAreaShare(0.012), 1.0);
   // The ends pass it on: the inflow's plug moves in at Q / A + w A_mean / A, the outflow's out
   // at Q / A - w A_mean / A.
-  BloodSettings blood;
-  blood.radius = Real(0.0018);
-  blood.spacing = Real(0.0036);
-  blood.supportRadius = Real(0.0072);
-  VesselEnds ends(path, blood);
+  VesselEnds ends(path, anatomicalScenario().blood);
   const double w = 0.05;
   ends.setFlows(0, 0, w);
   EXPECT_NEAR(double(ends.inflowSpeed()), w * atrium, 1e-6);
@@ -198,11 +200,7 @@ TEST(VesselShape, AStretchedVesselTakesInItsMeanSectionTimesTheDescent) {
 // included, as in a straight vessel: a layer that held fewer would leave a gap at the wall that
 // the blood spreads into, emptying the lumen's core in the first steps.
 TEST(VesselShape, EveryLayerOfTheBulgesStartsAtRestDensity) {
-  Scenario scenario;
-  scenario.geometry = anatomicalGeometry();
-  scenario.blood.radius = Real(0.0018);
-  scenario.blood.spacing = Real(0.0036);
-  scenario.blood.supportRadius = Real(0.0072);
+  const Scenario scenario = anatomicalScenario();
   const double d = double(scenario.blood.spacing);
   const LvModel& model = anatomicalModel();
   const FlowPath& path = model.flowPath;
@@ -236,11 +234,7 @@ TEST(VesselShape, EveryLayerOfTheBulgesStartsAtRestDensity) {
 // stretched, and sites taken at rest in a bulge would lie in its wall (or in the narrower vessel
 // above it); carried with the stretch they stay in the lumen.
 TEST(VesselShape, TheFillIsMeasuredWhereTheBaseHasCarriedTheLumen) {
-  Scenario scenario;
-  scenario.geometry = anatomicalGeometry();
-  scenario.blood.radius = Real(0.0018);
-  scenario.blood.spacing = Real(0.0036);
-  scenario.blood.supportRadius = Real(0.0072);
+  const Scenario scenario = anatomicalScenario();
   const LvModel& model = anatomicalModel();
   const VesselSites rest = vesselSites(scenario, model);
   const Real descent = Real(0.015);  // an adult's base descends 12-15 mm in systole
