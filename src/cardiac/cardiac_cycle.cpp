@@ -181,7 +181,7 @@ CardiacCycle::CardiacCycle(const CycleSettings& cycle, const LvModel& model, Ind
   if (cycle.baseHeld && model.flowPath.cavity)
     throw std::invalid_argument("cycle.base_held: holds the base of a procedural heart (its wall's two layers paired); "
                                 "expected false for a patient's heart (model.kind = \"mesh\")");
-  const Real farthest = widestEndocardium(beating, model, m_centre);
+  const Real farthest = cycle.baseHeld ? widestEndocardium(beating, model, m_centre) : Real(1);  // base held only
   if (cycle.pattern != BeatPattern::Inconsistent) {
     m_regions.push_back({toParticles(beating, firstParticle), BeatClock(main), {}, restOf(beating, model), {},
                          endSystoleTargets(beating, model, m_centre, cycle, farthest)});

@@ -464,9 +464,11 @@ bool HeartSimulation::wallCanYield() const {
 double HeartSimulation::vesselFill() const {
   if (!m_circulation) return 1;
   const BloodSettings& b = m_scenario.blood;
-  // With the lumped circulation the base has carried the vessels' roots down.
-  const VesselSites sites =
-      m_lumped ? m_vesselSites.descended(m_model->flowPath, Real(m_lastBaseDescent)) : m_vesselSites;
+  // With the lumped circulation the base has carried the vessels' roots down (the sites moved
+  // only then: this runs every step).
+  VesselSites moved;
+  if (m_lumped) moved = m_vesselSites.descended(m_model->flowPath, Real(m_lastBaseDescent));
+  const VesselSites& sites = m_lumped ? moved : m_vesselSites;
   // Blood farther below the lowest site than a kernel support adds nothing to any site.
   std::vector<Vec3> blood;
   for (std::size_t i = m_firstBloodParticle; i < m_particles.size(); ++i)

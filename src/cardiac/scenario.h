@@ -59,7 +59,7 @@ struct CycleSettings {
   Real systolicFraction = Real(0.35);  // share of the cycle spent in systole
   Real contraction = Real(0.3);        // m, total inward displacement of a beating vertex per systole
   Real relaxationFraction = Real(0.8); // share of a regular diastole spent returning to rest (0 = released at once)
-  bool baseHeld = false;  // the base ring held by the fibrous skeleton: the travel fades to none at the base (base_taper.h)
+  bool baseHeld = false;  // sections shrink about the long axis, none at the base (base_taper.h; cardiac_cycle.cpp)
   // Which vertices beat: the union of these selections. Empty everything = all myocardium.
   std::vector<int> segments;        // AHA segments 1..17
   std::vector<Index> vertices;      // vertex ids

@@ -145,8 +145,9 @@ std::vector<KeySpec> cycleKeys() {
               "Physiological mode: share of a regular diastole the wall takes to return to rest "
               "(0 = released to its constraints at once)."),
       boolKey("cycle.base_held", HS_FIELD(cycle.baseHeld),
-              "Physiological mode: the base ring is held by the fibrous skeleton, so a beating vertex's "
-              "travel fades from the mid-ventricle to none at the base plane."),
+              "Physiological mode, a procedural heart: each section shrinks about the long axis, the "
+              "wall thickening, and the base ring is held by the fibrous skeleton (the travel fades from "
+              "the mid-ventricle to none at the base plane)."),
       intListKey("cycle.segments", HS_FIELD(cycle.segments), 1, 17, true,
                  "AHA segments (1..17) that beat; with vertices and sphere empty, all myocardium beats."),
       intListKey("cycle.vertices", HS_FIELD(cycle.vertices), 0, std::numeric_limits<std::int64_t>::max(),
