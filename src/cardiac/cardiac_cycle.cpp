@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -104,36 +103,52 @@ std::vector<Vec3> restOf(const std::vector<Index>& vertices, const LvModel& mode
   return out;
 }
 
+// The beating shell at end-systole with the base held: volume_driven_wall.h's two half prolate
+// spheroids without the base's descent. The endocardium's widest radius a_i moves in by the
+// contraction; the epicardium keeps its apex and its base (c_o) and moves in only as the wall,
+// incompressible, thickens uniformly from h to h':
+//   (a_i' + h')^2 c_o - a_i'^2 (c_o - h') = a_o^2 c_o - a_i^2 c_i,   a_o = a_i + h, c_o = c_i + h,
+// so the endocardial apex rises by h' - h (the apex thickens as the sides do). The left side
+// grows with h' (bisection). Ratios of the new radii and long axes to the rest ones.
+struct HeldShell {
+  Real endoAcross = 1, endoAlong = 1, epiAcross = 1;
+};
+
+HeldShell heldShell(const LvGeometryParams& g, Real contraction) {
+  const double ai = double(g.endoRadius), ci = double(g.endoLongAxis), h = double(g.wallThickness);
+  const double ao = ai + h, co = ci + h;
+  const double wall = ao * ao * co - ai * ai * ci;
+  const double ai2 = std::max(ai - double(contraction), 0.0);
+  double low = 0, high = co;
+  for (int i = 0; i < 60; ++i) {
+    const double t = 0.5 * (low + high);
+    ((ai2 + t) * (ai2 + t) * co - ai2 * ai2 * (co - t) < wall ? low : high) = t;
+  }
+  const double h2 = 0.5 * (low + high);
+  return {Real(ai2 / ai), Real((co - h2) / ci), Real((ai2 + h2) / ao)};
+}
+
 // Where a systole takes each beating vertex (physiological mode):
 //  * the thesis's push: its rest position moved `contraction` toward the centre, never past it;
-//  * with the base held (cycle.base_held, an adult's procedural heart): each section shrinks
-//    about the long axis (the vertical through the centre) as the lumped circulation's wall's
-//    does, faded to none at the base plane (base_taper.h). The endocardium (even ids) moves in by
-//    `contraction` times its radius over the widest endocardial radius, and its epicardial partner
-//    (the next id) keeps the annulus between them, r_o'^2 = r_o^2 - (r_i^2 - r_i'^2): the wall
-//    thickens as it shortens round, where moving both layers alike, or toward one point, folded
-//    the elongated ventricle (surface turns of 76-118 degrees on `normal`'s sizes).
+//  * with the base held (cycle.base_held): the held shell above. Each section shrinks about the
+//    long axis (x = z = 0) by its layer's ratio, faded to none at the base plane (base_taper.h);
+//    the endocardium (even ids) also shortens toward the base plane, y' = y c_i'/c_i; the
+//    epicardium (odd ids) keeps its heights. Pushing toward one point, or moving both layers
+//    alike, crushes the wall's tets or stretches its surface, and the constraints, resisting,
+//    fold it (surface turns of 71-118 degrees).
 std::vector<Vec3> endSystoleTargets(const std::vector<Index>& vertices, const LvModel& model, const Vec3& centre,
-                                    const CycleSettings& cycle, Real widest) {
+                                    const CycleSettings& cycle) {
   const std::vector<Vec3>& x = model.mesh.vertices;
-  auto radial = [&](const Vec3& p) { return std::hypot(p.x() - centre.x(), p.z() - centre.z()); };
-  auto shrunk = [&](Index endo) {  // the endocardial vertex's radius at end-systole
-    const Real share = baseTaper(x[endo].y(), double(model.longAxisLength)) * cycle.contraction / widest;
-    return radial(x[endo]) * (1 - std::min(share, Real(1)));
-  };
+  const HeldShell shell = cycle.baseHeld ? heldShell(model.params, cycle.contraction) : HeldShell{};
   std::vector<Vec3> out;
   out.reserve(vertices.size());
   for (Index v : vertices) {
     const Vec3& rest = x[v];
     if (cycle.baseHeld) {
-      const Real r = radial(rest);
-      Real now = shrunk(v - v % 2);
-      if (v % 2 == 1) {  // the epicardium keeps the wall's section: r_o'^2 = r_o^2 - (r_i^2 - r_i'^2)
-        const Real inner = radial(x[v - 1]);
-        now = std::sqrt(std::max(r * r - (inner * inner - now * now), Real(0)));
-      }
-      const Real scale = r > 0 ? now / r : Real(1);
-      out.push_back(Vec3(centre.x() + scale * (rest.x() - centre.x()), rest.y(), centre.z() + scale * (rest.z() - centre.z())));
+      const bool endo = v % 2 == 0;
+      const Real ratio = endo ? shell.endoAcross : shell.epiAcross;
+      const Real across = 1 - baseTaper(rest.y(), double(model.longAxisLength)) * (1 - ratio);
+      out.push_back(Vec3(across * rest.x(), endo ? rest.y() * shell.endoAlong : rest.y(), across * rest.z()));
       continue;
     }
     const Vec3 toCentre = centre - rest;
@@ -141,17 +156,6 @@ std::vector<Vec3> endSystoleTargets(const std::vector<Index>& vertices, const Lv
     out.push_back(distance > Real(0) ? rest + (std::min(cycle.contraction, distance) / distance) * toCentre : rest);
   }
   return out;
-}
-
-// The widest endocardial radius (even ids: the procedural shell's inner layer) about the long
-// axis, the vertical through the centre.
-Real widestEndocardium(const std::vector<Index>& vertices, const LvModel& model, const Vec3& centre) {
-  Real widest = 0;
-  for (Index v : vertices) {
-    const Vec3& x = model.mesh.vertices[v - v % 2];
-    widest = std::max(widest, std::hypot(x.x() - centre.x(), x.z() - centre.z()));
-  }
-  return std::max(widest, std::numeric_limits<Real>::min());
 }
 
 std::vector<Index> toParticles(const std::vector<Index>& vertices, Index first) {
@@ -165,6 +169,11 @@ std::vector<Index> toParticles(const std::vector<Index>& vertices, Index first) 
 CardiacCycle::CardiacCycle(const CycleSettings& cycle, const LvModel& model, Index firstParticle)
     : m_centre(model.centre), m_contraction(cycle.contraction) {
   if (!cycle.enabled) return;
+  m_kinematic = cycle.baseHeld && cycle.mode == TimingMode::Physiological;
+  // A kinematic wall returns to rest only along the relaxation's path: without one it would jump.
+  if (m_kinematic && !(cycle.relaxationFraction > 0))
+    throw std::invalid_argument("cycle.relaxation_fraction: got 0; expected more than 0 with cycle.base_held = true "
+                                "(the held wall returns to rest only along the relaxation)");
   {
     // Relaxation lasts a share of the regular diastole (the irregular pattern cuts diastoles).
     const double period = 60.0 / double(cycle.heartRateBpm);
@@ -177,14 +186,9 @@ CardiacCycle::CardiacCycle(const CycleSettings& cycle, const LvModel& model, Ind
                                 "selects no wall vertex that can move; expected a sphere that reaches the wall, "
                                 "segments 1-17 or myocardium vertex ids");
   const BeatClockSettings main = clockSettings(cycle);
-  // The shell's layers pair as (2i, 2i + 1) in a procedural heart only.
-  if (cycle.baseHeld && model.flowPath.cavity)
-    throw std::invalid_argument("cycle.base_held: holds the base of a procedural heart (its wall's two layers paired); "
-                                "expected false for a patient's heart (model.kind = \"mesh\")");
-  const Real farthest = cycle.baseHeld ? widestEndocardium(beating, model, m_centre) : Real(1);  // base held only
   if (cycle.pattern != BeatPattern::Inconsistent) {
     m_regions.push_back({toParticles(beating, firstParticle), BeatClock(main), {}, restOf(beating, model), {},
-                         endSystoleTargets(beating, model, m_centre, cycle, farthest)});
+                         endSystoleTargets(beating, model, m_centre, cycle)});
     return;
   }
   // Inconsistent: the listed segments leave the main region and get their own clock, with
@@ -208,9 +212,9 @@ CardiacCycle::CardiacCycle(const CycleSettings& cycle, const LvModel& model, Ind
   other.startDelay = cycle.inconsistentPhaseOffset;
   const BeatClock offClock(other);
   m_regions.push_back({toParticles(mainPart, firstParticle), BeatClock(main), {}, restOf(mainPart, model), {},
-                       endSystoleTargets(mainPart, model, m_centre, cycle, farthest)});
+                       endSystoleTargets(mainPart, model, m_centre, cycle)});
   m_regions.push_back({toParticles(offPart, firstParticle), offClock, {}, restOf(offPart, model), {},
-                       endSystoleTargets(offPart, model, m_centre, cycle, farthest)});
+                       endSystoleTargets(offPart, model, m_centre, cycle)});
 }
 
 void CardiacCycle::apply(std::vector<Vec3>& positions, std::vector<Vec3>& predicted, const pbd::StepContext& context) {
@@ -235,7 +239,10 @@ void CardiacCycle::apply(std::vector<Vec3>& positions, std::vector<Vec3>& predic
       followPath(predicted, region, m_contraction);
     } else if (phase == Phase::Diastole && m_relaxationSeconds > 0 && !region.endSystole.empty()) {
       const double elapsed = double(step + 1) * double(dt);
-      if (elapsed <= m_relaxationSeconds + 0.5 * double(dt)) relaxPath(predicted, region, elapsed, m_relaxationSeconds);
+      if (m_kinematic || elapsed <= m_relaxationSeconds + 0.5 * double(dt))
+        relaxPath(predicted, region, elapsed, m_relaxationSeconds);  // at rest once relaxed
+    } else if (m_kinematic) {  // before the first systole or after the last beat: at rest
+      for (std::size_t k = 0; k < region.particles.size(); ++k) predicted[region.particles[k]] = region.rest[k];
     }
   }
 }

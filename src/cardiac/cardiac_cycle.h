@@ -14,6 +14,12 @@
 // the wall's constraints. The end-systolic shape is fixed (as the heart's is, by its
 // contractility), so a diastole cut short (irregular pattern) starts the next systole from a
 // smaller volume and the beat ejects less: the thesis expert's "not fully released" beat.
+// With cycle.base_held the end-systolic shape is a thickened shell (cardiac_cycle.cpp,
+// heldShell) and the beating vertices are kinematic, as the lumped circulation's wall's are
+// (volume_driven_wall.h): their constraints, which keep each surface triangle's area, would
+// otherwise fold an endocardium that must shrink (surface turns of 80-111 degrees at 7-10 mm of
+// contraction on the patient hearts); they follow their paths the whole beat, at rest after the
+// relaxation. Two-way coupling can then push only the segments that do not beat.
 #include <vector>
 
 #include "cardiac/beat_clock.h"
@@ -59,6 +65,9 @@ class CardiacCycle {
   [[nodiscard]] int beatsCompleted() const;  // systoles completed by the main region
   [[nodiscard]] const std::vector<BeatingRegion>& regions() const { return m_regions; }
   [[nodiscard]] const Vec3& centre() const { return m_centre; }
+  // The beating vertices follow their paths the whole beat (cycle.base_held, physiological): the
+  // simulation gives them no mass.
+  [[nodiscard]] bool kinematic() const { return m_kinematic; }
   // Checkpoints: each region's clock, anchor and end-systolic positions.
   void save(pbd::StateWriter& w) const;
   void load(pbd::StateReader& r);
@@ -68,6 +77,7 @@ class CardiacCycle {
   Vec3 m_centre;
   Real m_contraction = 0;           // physiological mode (m)
   double m_relaxationSeconds = 0;   // physiological mode: prescribed return to rest
+  bool m_kinematic = false;
 };
 
 }  // namespace hs::cardiac

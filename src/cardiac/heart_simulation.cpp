@@ -89,6 +89,12 @@ void HeartSimulation::buildHeart() {
   } else {
     checkContraction(m_scenario.cycle, model);
     m_cycle.emplace(m_scenario.cycle, model, m_firstWallParticle);
+    if (m_cycle->kinematic()) {  // the held shell (cycle.base_held) moves its beating vertices alone
+      for (const BeatingRegion& region : m_cycle->regions())
+        for (Index p : region.particles) m_particles.inverseMass[p] = 0;
+      refuseTwoWayOnADrivenWall("cycle.base_held = true drives every vertex of this wall along its path",
+                                "cycle.base_held = false");
+    }
   }
   assert(m_firstWallParticle == 0 && "cavityVolume reads particle positions as model vertices");
   m_restVolume.reserve(model.mesh.tets.size());
@@ -145,11 +151,8 @@ void HeartSimulation::buildLumpedCirculation() {
   for (Index v : m_drivenWall->drivenVertices()) m_particles.inverseMass[m_firstWallParticle + v] = 0;
   // Two-way coupling moves only vertices with mass: where the lumped circulation drives all of
   // them, the switch would change nothing, so it is refused rather than ignored.
-  if (c.twoWay && !wallCanYield())
-    throw std::invalid_argument(
-        "circulation.two_way: the lumped circulation drives every vertex of this wall (its volume sets the "
-        "wall's shape), so the blood cannot push it back; two-way coupling needs circulation.lumped = false or "
-        "segments that do not beat (cycle.segments)");
+  refuseTwoWayOnADrivenWall("the lumped circulation drives every vertex of this wall (its volume sets the wall's shape)",
+                            "circulation.lumped = false");
 
   LumpedParameters p = c.lumpedParameters;
   constexpr double pi = std::numbers::pi;
@@ -455,10 +458,19 @@ void HeartSimulation::endStep(const pbd::StepContext&) {
   c.meter.recordLoop(turnover.returned, turnover.reentered, c.loop.waiting());
 }
 
+// Two-way coupling pushes only myocardium vertices with mass: where the motion drives all of them,
+// the switch would change nothing, so it is refused rather than ignored.
+void HeartSimulation::refuseTwoWayOnADrivenWall(const std::string& why, const std::string& remedy) const {
+  if (m_scenario.circulation.twoWay && !wallCanYield())
+    throw std::invalid_argument("circulation.two_way: " + why + ", so the blood cannot push it back; two-way " +
+                                "coupling needs " + remedy + " or segments that do not beat (cycle.segments)");
+}
+
 bool HeartSimulation::wallCanYield() const {
   if (!m_model) return false;
-  const auto firstWall = m_particles.inverseMass.begin() + m_firstWallParticle;
-  return std::any_of(firstWall, firstWall + std::ptrdiff_t(m_model->mesh.vertices.size()), [](Real w) { return w > 0; });
+  for (std::size_t v = 0; v < m_model->mesh.vertices.size(); ++v)
+    if (m_model->region[v] == Region::Myocardium && m_particles.inverseMass[m_firstWallParticle + v] > 0) return true;
+  return false;
 }
 
 double HeartSimulation::vesselFill() const {

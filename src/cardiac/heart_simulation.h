@@ -76,8 +76,10 @@ class HeartSimulation {
   [[nodiscard]] const VolumeDrivenWall* drivenWall() const { return m_drivenWall ? &*m_drivenWall : nullptr; }
   // [motion]: the recorded beat driving the endocardium; null otherwise.
   [[nodiscard]] const RecordedBeat* recordedBeat() const { return m_recordedBeat ? &*m_recordedBeat : nullptr; }
-  // Some wall vertex has mass (is neither pinned nor driven): two-way coupling can move it.
+  // Some myocardium vertex has mass (is neither pinned nor driven): two-way coupling, which pushes
+  // the myocardium only, can move it.
   [[nodiscard]] bool wallCanYield() const;
+  void refuseTwoWayOnADrivenWall(const std::string& why, const std::string& remedy) const;
   // Heart and blood: the smaller share of the two vessels' lumens holding blood after the last
   // step: of each vessel's rest-density sites between the ends' buffers, the share whose blood
   // colour is at least half of its value with the heart full (vesselFillShare, heart_sites.h).

@@ -151,6 +151,14 @@ TEST(CliErrors, SwitchesTheLumpedCirculationCannotHonourAreBadInput) {
                  {"normal", "circulation.loop", "needs the closed loop", "expected true"});
 }
 
+// The held wall (cycle.base_held) returns to rest only along the relaxation: without one it would
+// jump there.
+TEST(CliErrors, AHeldWallWithoutARelaxationIsBadInput) {
+  const auto dir = scratchDir("held_relaxation");
+  expectBadInput(runHeartsim("run patient-biv-me --set cycle.relaxation_fraction=0", dir),
+                 {"patient-biv-me", "cycle.relaxation_fraction", "got 0", "expected more than 0 with cycle.base_held"});
+}
+
 // Without the lumped circulation the wall travels cycle.contraction per systole: the default
 // 0.3 m on a 3 cm heart folds it, so it is refused before any work, naming the limit.
 TEST(CliErrors, AContractionThatFoldsTheWallIsBadInput) {

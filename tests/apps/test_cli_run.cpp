@@ -66,17 +66,6 @@ TEST(CliRun, TheRealSizeHeartsHaveAnAdultsSizes) {
   }
 }
 
-// cycle.base_held pairs the procedural wall's two layers: a patient's heart is refused, naming
-// the key and what was expected, in one line.
-TEST(CliRun, AHeldBaseIsRefusedOnAPatientsHeart) {
-  const CliResult r = runHeartsim("run idealized-lv --duration 0.01 --set cycle.base_held=true --out out",
-                                  scratchDir("base_held_patient"));
-  EXPECT_EQ(r.exitCode, 2) << r.err;
-  EXPECT_NE(r.err.find("cycle.base_held: holds the base of a procedural heart"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("expected false for a patient's heart"), std::string::npos) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-}
-
 // The foundation's acceptance figures: the thesis-scale wall keeps its tet volumes, never
 // inverts, and ejects while beating.
 TEST(CliRun, HeartOnlyKeepsVolumeAndEjects) {

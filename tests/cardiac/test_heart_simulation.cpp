@@ -240,5 +240,45 @@ TEST(HeartSimulation, PhysiologicalSystoleShrinksTheCavityEveryStep) {
   EXPECT_EQ(sim.lastPhase(), Phase::Diastole);
 }
 
+// The held shell (cycle.base_held) is kinematic: its beating vertices have no mass, reach their
+// end-systolic targets when the systole ends whatever the constraints would say, and are back at
+// rest when the relaxation ends, staying there to the next systole.
+TEST(HeartSimulation, AHeldWallFollowsItsPathAndComesBackToRest) {
+  Scenario s;
+  s.cycle.mode = TimingMode::Physiological;
+  s.cycle.baseHeld = true;
+  s.geometry.resolution = Real(0.5);
+  HeartSimulation sim(s, 1);
+  const BeatingRegion& region = sim.cycle().regions().front();
+  for (Index p : region.particles) ASSERT_EQ(sim.particles().inverseMass[p], 0) << "particle " << p;
+  auto farthest = [&](const std::vector<Vec3>& goal) {
+    double d = 0;
+    for (std::size_t k = 0; k < region.particles.size(); ++k)
+      d = std::max(d, double((sim.particles().position[region.particles[k]] - goal[k]).norm()));
+    return d;
+  };
+  sim.step();
+  while (sim.lastPhase() == Phase::Systole) {
+    const double before = farthest(region.target);
+    sim.step();
+    if (sim.lastPhase() == Phase::Systole) {
+      EXPECT_LT(farthest(region.target), before);
+    }
+  }
+  const double scale = double(s.geometry.endoRadius);
+  EXPECT_LT(farthest(region.target), 1e-3 * scale) << "the systole ended at its targets";
+  const Real rest = cardiac::cavityVolume(sim.model(), sim.model().mesh.vertices);
+  EXPECT_LT(sim.cavityVolume(), Real(0.8) * rest);
+  while (sim.lastPhase() == Phase::Diastole) {
+    sim.step();
+    // The relaxation takes 0.8 of the diastole, over by 0.73 s of the 0.83 s beat.
+    if (sim.lastPhase() == Phase::Diastole && double(sim.time()) > 0.9 * 60 / double(s.cycle.heartRateBpm)) {
+      EXPECT_LT(farthest(region.rest), 1e-6 * scale) << "at rest after the relaxation, t = " << sim.time();
+    }
+  }
+  EXPECT_EQ(sim.lastPhase(), Phase::Systole);
+  EXPECT_EQ(sim.tissueStats().invertedTets, 0u);
+}
+
 }  // namespace
 }  // namespace hs::cardiac
