@@ -89,12 +89,12 @@ void HeartSimulation::buildHeart() {
   } else {
     checkContraction(m_scenario.cycle, model);
     m_cycle.emplace(m_scenario.cycle, model, m_firstWallParticle);
-    if (m_cycle->kinematic()) {  // the held shell (cycle.base_held) moves its beating vertices alone
+    // The held shell (cycle.base_held) moves its beating vertices alone, except where the blood
+    // must push them (two-way coupling): the blood's push is its contact with the wall the
+    // constraints moved into it (step()), so they keep their mass and their constraints.
+    if (m_cycle->kinematic() && !m_scenario.circulation.twoWay)
       for (const BeatingRegion& region : m_cycle->regions())
         for (Index p : region.particles) m_particles.inverseMass[p] = 0;
-      refuseTwoWayOnADrivenWall("cycle.base_held = true drives every vertex of this wall along its path",
-                                "cycle.base_held = false");
-    }
   }
   assert(m_firstWallParticle == 0 && "cavityVolume reads particle positions as model vertices");
   m_restVolume.reserve(model.mesh.tets.size());
@@ -151,8 +151,11 @@ void HeartSimulation::buildLumpedCirculation() {
   for (Index v : m_drivenWall->drivenVertices()) m_particles.inverseMass[m_firstWallParticle + v] = 0;
   // Two-way coupling moves only vertices with mass: where the lumped circulation drives all of
   // them, the switch would change nothing, so it is refused rather than ignored.
-  refuseTwoWayOnADrivenWall("the lumped circulation drives every vertex of this wall (its volume sets the wall's shape)",
-                            "circulation.lumped = false");
+  if (c.twoWay && !wallCanYield())
+    throw std::invalid_argument(
+        "circulation.two_way: the lumped circulation drives every vertex of this wall (its volume sets the "
+        "wall's shape), so the blood cannot push it back; two-way coupling needs circulation.lumped = false or "
+        "segments that do not beat (cycle.segments)");
 
   LumpedParameters p = c.lumpedParameters;
   constexpr double pi = std::numbers::pi;
@@ -434,7 +437,11 @@ void HeartSimulation::lendWallDensity(const pbd::StepContext& context) {
 void HeartSimulation::resolveBloodContacts(const pbd::StepContext& context) {
   if (!m_wallContact) return;
   m_circulation->valves.gateParticles(m_particles, m_firstBloodParticle);
+  // Two-way, the blood's push on the wall is what this contact moves it by: its cavity's change.
+  const bool twoWay = m_scenario.circulation.twoWay;
+  const double before = twoWay ? double(cardiac::cavityVolume(*m_model, m_particles.predicted)) : 0.0;
   m_wallContact->resolve(m_particles, m_firstBloodParticle, Index(m_particles.size()), wallContactSettings(context));
+  if (twoWay) m_lastBloodPush = double(cardiac::cavityVolume(*m_model, m_particles.predicted)) - before;
   if (m_ends) m_ends->hold(m_particles);
   // blood.wall_contact = continuous: each particle's whole step, from where it started to where
   // it is now, against the wall moving from its start to its prediction, so that no step
@@ -456,14 +463,6 @@ void HeartSimulation::endStep(const pbd::StepContext&) {
   const BloodLoop::Turnover turnover =
       c.settings.loop ? c.loop.circulate(m_particles, m_firstBloodParticle) : BloodLoop::Turnover{};
   c.meter.recordLoop(turnover.returned, turnover.reentered, c.loop.waiting());
-}
-
-// Two-way coupling pushes only myocardium vertices with mass: where the motion drives all of them,
-// the switch would change nothing, so it is refused rather than ignored.
-void HeartSimulation::refuseTwoWayOnADrivenWall(const std::string& why, const std::string& remedy) const {
-  if (m_scenario.circulation.twoWay && !wallCanYield())
-    throw std::invalid_argument("circulation.two_way: " + why + ", so the blood cannot push it back; two-way " +
-                                "coupling needs " + remedy + " or segments that do not beat (cycle.segments)");
 }
 
 bool HeartSimulation::wallCanYield() const {

@@ -79,7 +79,9 @@ class HeartSimulation {
   // Some myocardium vertex has mass (is neither pinned nor driven): two-way coupling, which pushes
   // the myocardium only, can move it.
   [[nodiscard]] bool wallCanYield() const;
-  void refuseTwoWayOnADrivenWall(const std::string& why, const std::string& remedy) const;
+  // Two-way coupling: the cavity's change (m^3) the blood's push on the wall made in the last
+  // step's contacts; 0 otherwise.
+  [[nodiscard]] double lastBloodPush() const { return m_lastBloodPush; }
   // Heart and blood: the smaller share of the two vessels' lumens holding blood after the last
   // step: of each vessel's rest-density sites between the ends' buffers, the share whose blood
   // colour is at least half of its value with the heart full (vesselFillShare, heart_sites.h).
@@ -149,6 +151,7 @@ class HeartSimulation {
   std::optional<Circulation> m_circulation;                 // heart and blood
   std::optional<LumpedCirculation> m_lumped;                // circulation.lumped
   std::optional<VolumeDrivenWall> m_drivenWall;             // circulation.lumped
+  double m_lastBloodPush = 0;                                // m^3, two-way coupling
   std::optional<VesselEnds> m_ends;                         // circulation.lumped
   std::optional<RecordedBeat> m_recordedBeat;               // [motion]
   std::vector<double> m_regionShares;                       // circulation.lumped: per beating region

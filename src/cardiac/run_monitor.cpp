@@ -74,6 +74,8 @@ void RunExtremes::add(const StepSample& sample, bool heart) {
     volumeErrorMax = std::max(volumeErrorMax, double(sample.tissue.volumeErrorMax));
     volumeErrorMeanSum += double(sample.tissue.volumeErrorMean);
     surfaceTurnMax = std::max(surfaceTurnMax, sample.surfaceTurn);
+    bloodPushMax = std::max(bloodPushMax, std::abs(sample.bloodPush));
+    bloodPushSum += std::abs(sample.bloodPush);
     cavityMin = std::min(cavityMin, sample.cavity);
     cavityMax = std::max(cavityMax, sample.cavity);
   }
@@ -147,6 +149,7 @@ const Verdict& RunMonitor::observe() {
   if (m_sim.hasHeart() && m_settings.pump) {
     sample.cavity = double(m_sim.cavityVolume());
     sample.surfaceTurn = pbd::largestHingeTurn(m_hinges, m_restHingeAngles, m_sim.particles().position);
+    sample.bloodPush = m_sim.lastBloodPush();
   }
   if (!check(sample.tissue, sample.cavity)) return m_verdict;
   gather(sample);
@@ -210,6 +213,9 @@ RunSummary RunMonitor::summary() const {
     r.surfaceTriangles = model.surface.size();
     r.volumeErrorMax = e.volumeErrorMax;
     r.surfaceTurnMax = e.surfaceTurnMax;
+    r.twoWay = m_sim.scenario().circulation.twoWay && m_sim.hasBlood();
+    r.bloodPushMax = e.bloodPushMax;
+    r.bloodPushMean = m_observed > 0 ? e.bloodPushSum / double(m_observed) : 0.0;
     r.volumeErrorMean = m_observed > 0 ? e.volumeErrorMeanSum / double(m_observed) : 0.0;
     r.invertedTets = m_sim.tissueStats().invertedTets;
     r.restDeviation = m_sim.restDeviationRelative();
@@ -242,21 +248,21 @@ void Verdict::load(pbd::StateReader& r) { r.fields(issue.check, issue.what, step
 
 void StepSample::save(pbd::StateWriter& w) const {
   w.fields(step, startTime, time, phase, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
-           contraction, baseDescent, vesselFill, surfaceTurn);
+           contraction, baseDescent, vesselFill, surfaceTurn, bloodPush);
 }
 
 void StepSample::load(pbd::StateReader& r) {
   r.fields(step, startTime, time, phase, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
-           contraction, baseDescent, vesselFill, surfaceTurn);
+           contraction, baseDescent, vesselFill, surfaceTurn, bloodPush);
 }
 
 void RunExtremes::save(pbd::StateWriter& w) const {
-  w.fields(volumeErrorMax, volumeErrorMeanSum, surfaceTurnMax, cavityMin, cavityMax, bloodLostMax, bloodInsideWallMax, bloodSpeedMax,
+  w.fields(volumeErrorMax, volumeErrorMeanSum, surfaceTurnMax, bloodPushMax, bloodPushSum, cavityMin, cavityMax, bloodLostMax, bloodInsideWallMax, bloodSpeedMax,
            lastSecondFrom, densityErrorMeanSum, densityErrorMax, lastSecondSteps);
 }
 
 void RunExtremes::load(pbd::StateReader& r) {
-  r.fields(volumeErrorMax, volumeErrorMeanSum, surfaceTurnMax, cavityMin, cavityMax, bloodLostMax, bloodInsideWallMax, bloodSpeedMax,
+  r.fields(volumeErrorMax, volumeErrorMeanSum, surfaceTurnMax, bloodPushMax, bloodPushSum, cavityMin, cavityMax, bloodLostMax, bloodInsideWallMax, bloodSpeedMax,
            lastSecondFrom, densityErrorMeanSum, densityErrorMax, lastSecondSteps);
 }
 

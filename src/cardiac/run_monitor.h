@@ -79,6 +79,8 @@ struct StepSample {
   // With a heart and pump figures: the largest turn from rest (radians) of a hinge of the wall's
   // surface that is smooth at rest (pbd/surface_hinges.h, run_monitor.cpp): a crease folds one.
   double surfaceTurn = 0;
+  // Two-way coupling: the cavity's change (m^3) from the blood's push on the wall in the step.
+  double bloodPush = 0;
   [[nodiscard]] double pressure(FlowRegion region) const { return flowStep.pressure[std::size_t(region)]; }
   void save(pbd::StateWriter& w) const;
   void load(pbd::StateReader& r);
@@ -91,6 +93,7 @@ struct RunExtremes {
   double volumeErrorMax = 0;
   double volumeErrorMeanSum = 0;  // sum over steps of the per-step mean
   double surfaceTurnMax = 0;      // radians
+  double bloodPushMax = 0, bloodPushSum = 0;  // m^3, of |bloodPush|
   double cavityMin = std::numeric_limits<double>::infinity();
   double cavityMax = -std::numeric_limits<double>::infinity();
   std::size_t bloodLostMax = 0, bloodInsideWallMax = 0;
@@ -113,6 +116,9 @@ struct RunSummary {
   std::size_t vertices = 0, tets = 0, surfaceTriangles = 0;
   double volumeErrorMax = 0, volumeErrorMean = 0;
   double surfaceTurnMax = 0;     // radians: the wall surface's largest hinge turn from rest
+  // Two-way coupling: the cavity moved by the blood's push in a step (m^3), largest and mean.
+  bool twoWay = false;
+  double bloodPushMax = 0, bloodPushMean = 0;
   std::size_t invertedTets = 0;  // at the end
   Real restDeviation = 0;        // at the end
   Real minDihedralDeg = 0, maxAspectRatio = 0;

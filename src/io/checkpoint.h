@@ -32,7 +32,7 @@ struct CheckpointError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-inline constexpr std::uint32_t kCheckpointVersion = 2;
+inline constexpr std::uint32_t kCheckpointVersion = 3;  // 3: the blood's push on the wall in the run monitor
 
 struct Checkpoint {
   std::string scenarioToml;

@@ -84,6 +84,10 @@ void addHeartReport(nlohmann::ordered_json& report, const cardiac::RunSummary& r
       // largest bend from rest, where a crease shows.
       {"worst_tet_volume_error", run.volumeErrorMax},
       {"surface_turn_max_deg", run.surfaceTurnMax * 180 / std::numbers::pi},
+      // Two-way coupling: the cavity the blood's push moved in one step, largest and mean (mL);
+      // null without it.
+      {"moved_by_blood_ml_max", run.twoWay ? nlohmann::ordered_json(run.bloodPushMax * 1e6) : nlohmann::ordered_json()},
+      {"moved_by_blood_ml_mean", run.twoWay ? nlohmann::ordered_json(run.bloodPushMean * 1e6) : nlohmann::ordered_json()},
       {"inverted_tets", run.invertedTets},
       {"rest_deviation_final_rel", run.restDeviation},
       {"min_dihedral_deg", run.minDihedralDeg},
