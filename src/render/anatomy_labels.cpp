@@ -145,18 +145,27 @@ void drawLabels(viz::Image& image, const std::vector<SceneLabel>& labels, const 
       if (r.x < q.x + q.width && q.x < r.x + r.width && r.y < q.y + q.height && q.y < r.y + r.height) return true;
     return false;
   };
+  // The heart's column on the image: the anchors' mean across. A name goes out from it, away from
+  // the heart; an anchor on the column (a side view, where the atrium and the root lie one behind
+  // the other) takes the side it has seen from the front, so the names split into two columns
+  // instead of stacking in one.
+  float column = 0;
+  int onScreen = 0;
+  for (const SceneLabel& label : labels)
+    if (const ProjectedLabel p = projectLabel(label, camera, w, h); p.onScreen) column += p.x, ++onScreen;
+  column = onScreen > 0 ? column / float(onScreen) : float(w) / 2;
+  const float onColumn = 0.06f * float(w);
   for (const SceneLabel& label : labels) {
     const ProjectedLabel p = projectLabel(label, camera, w, h);
     if (!p.onScreen) continue;
     if (p.hasArrow) drawArrow(image, p.arrowFromX, p.arrowFromY, p.arrowToX, p.arrowToY, scale);
     const int textWidth = viz::Image::textWidth(label.text, scale);
-    // Away from the image's centre, so the names sit outside the heart in every view.
     float ex = p.x, ey = p.y + reach / 2;
     int tx = 0, ty = 0;
     if (label.side == LabelSide::Below) {
       tx = int(ex) - textWidth / 2, ty = int(ey) + pad;
     } else {
-      const bool left = p.x < float(w) / 2;
+      const bool left = std::abs(p.x - column) < onColumn ? label.side == LabelSide::Left : p.x < column;
       ex = p.x + (left ? -reach : reach), ey = p.y - reach / 2;
       tx = left ? int(ex) - textWidth - pad : int(ex) + pad, ty = int(ey) - textHeight / 2;
     }

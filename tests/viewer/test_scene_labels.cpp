@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 
 #include "cardiac/heart_simulation.h"
 #include "io/scenario_file.h"
@@ -176,6 +177,29 @@ TEST(SceneLabels, NoNameCoversTheColourKey) {
   render::drawLabels(covered, labels, camera);
   EXPECT_GT(paperIn(covered), 100) << "the test must put a name where the key is";
   EXPECT_EQ(paperIn(avoided), 0);
+}
+
+// Seen from the side the atrium and the aortic root lie one behind the other, on the heart's
+// column: their names split to its two sides by the side they have seen from the front (the
+// inflow's on one, the outflow's on the other) instead of stacking in one column whose leader
+// lines cross.
+TEST(SceneLabels, ASideViewSplitsTheNamesToBothSidesOfTheHeart) {
+  const cardiac::HeartSimulation sim(io::loadScenario("normal"), 1);
+  const std::vector<SceneLabel> labels = anatomyLabels(sim);
+  const render::Camera camera = render::viewCamera(render::View::Left, render::sceneBounds(sim), 4.0f / 3);
+  viz::Image image(800, 600);
+  image.fill({200, 200, 200});
+  render::drawLabels(image, labels, camera);
+  float column = 0;
+  for (const SceneLabel& label : labels) column += projectLabel(label, camera, 800, 600).x;
+  column /= float(labels.size());
+  int left = 0, right = 0;  // the names' pure white paper either side of the column
+  for (int y = 0; y < 600; ++y)
+    for (int x = 0; x < 800; ++x)
+      if (image.at(x, y) == viz::Rgb{255, 255, 255}) (float(x) < column ? left : right) += 1;
+  std::printf("paper left of the heart %d px, right %d px\n", left, right);
+  EXPECT_GT(left, right / 3);
+  EXPECT_GT(right, left / 3);
 }
 
 }  // namespace
