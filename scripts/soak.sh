@@ -8,6 +8,12 @@
 # 10 minutes (least squares over every beat). Results: results/soak/<scenario>/.
 # HEARTSIM=path/to/heartsim runs that executable instead of the release build; THREADS=N sets
 # each run's threads (default: the number of cores).
+# A soak longer than a sitting goes on where it stopped: each run writes a checkpoint every
+# CHECKPOINT_EVERY simulated seconds (default 60) into results/soak/<scenario>/part-<k>/, and
+# RESUME=1 continues each scenario from its latest checkpoint in a new part (bitwise the run
+# that never stopped: CliCheckpoint tests). The row then covers every part: metrics.csv rows
+# joined at each resume's time, the worst tetrahedron from the last summary (the checkpoint
+# carries the run's monitor), wall seconds summed over the parts.
 # A long run, not a test: docs/reliability.md has the figures.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,13 +35,49 @@ fi
 printf '%-28s %4s %8s %8s %5s %6s %8s %9s %8s %6s %8s %8s %10s\n' scenario exit sim_s wall_s lost inside \
   inverted vol_err min_dih beats EF_first EF_last drift/10min
 for s in "${scenarios[@]}"; do
-  out=results/soak/$s
+  soak=results/soak/$s
+  latest=
+  if [ "${RESUME:-0}" = 1 ]; then
+    latest=$(ls "$soak"/part-*/checkpoint_*.hsck 2>/dev/null | sort -t/ -k4,4V -k5,5 | tail -n 1 || true)
+  fi
+  [ -n "$latest" ] || rm -rf "$soak"
+  parts=$(ls -d "$soak"/part-* 2>/dev/null | wc -l || true)
+  out=$soak/part-$((parts + 1))
   mkdir -p "$out"
   start=$(date +%s)
+  echo "$start" > "$out/started_s.txt"
   code=0
-  "$heartsim" run "$s" --duration "$seconds" --threads "${THREADS:-$(nproc)}" --out "$out" \
-    > "$out/stdout.txt" 2> "$out/stderr.txt" || code=$?
-  wall=$(( $(date +%s) - start ))
+  if [ -n "$latest" ]; then
+    echo "$latest" > "$out/resumed_from.txt"
+    "$heartsim" run --resume "$latest" --duration "$seconds" --threads "${THREADS:-$(nproc)}" --out "$out" \
+      --checkpoint-every "${CHECKPOINT_EVERY:-60}" > "$out/stdout.txt" 2> "$out/stderr.txt" || code=$?
+  else
+    "$heartsim" run "$s" --duration "$seconds" --threads "${THREADS:-$(nproc)}" --out "$out" \
+      --checkpoint-every "${CHECKPOINT_EVERY:-60}" > "$out/stdout.txt" 2> "$out/stderr.txt" || code=$?
+  fi
+  echo $(( $(date +%s) - start )) > "$out/wall_s.txt"
+  # Only the newest two checkpoints are kept: a resume needs the last.
+  { ls "$soak"/part-*/checkpoint_*.hsck 2>/dev/null || true; } | sort -t/ -k4,4V -k5,5 | head -n -2 | xargs -r rm -f
+  # Wall seconds over every part; a part that was stopped ran until its metrics.csv was last written.
+  wall=0
+  for part in "$soak"/part-*; do
+    if [ -f "$part/wall_s.txt" ]; then wall=$((wall + $(cat "$part/wall_s.txt")))
+    else wall=$((wall + $(stat -c %Y "$part/metrics.csv") - $(cat "$part/started_s.txt"))); fi
+  done
+  # The parts' rows joined: each part's rows up to the time the next one resumed from.
+  metrics=$soak/metrics.csv
+  : > "$metrics"
+  for part in $(ls -d "$soak"/part-* | sort -t- -k2,2n); do
+    next=$soak/part-$(( ${part##*-} + 1 ))
+    until=1e300
+    if [ -f "$next/resumed_from.txt" ]; then
+      until=$(grep -o 'checkpoint_[0-9.]*s' "$next/resumed_from.txt" | grep -o '[0-9][0-9.]*[0-9]')
+    fi
+    awk -F, -v until="$until" -v header="$([ -s "$metrics" ] && echo 0 || echo 1)" '
+      NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "time_s") tc = i; if (header) print; next }
+      $tc <= until + 1e-9 { print }' "$part/metrics.csv" >> "$metrics"
+  done
+  out=$(ls -d "$soak"/part-* | sort -t- -k2,2n | tail -n 1)
   # The smallest dihedral angle over the run is in the summary (there is none after a crash).
   dihedral=$(grep -o '"min_dihedral_deg": *[0-9.]*' "$out/summary.json" 2>/dev/null | grep -o '[0-9.]*$' || echo n/a)
   # Per beat (from one systole's start to the next): EF = (EDV - ESV) / EDV of the cavity volume.
@@ -67,5 +109,5 @@ for s in "${scenarios[@]}"; do
       printf "%-28s %4d %8.1f %8d %5s %6s %8d %9.3f %8s %6d %8s %8s %10s\n", name, code, last, wall, lost, inside,
         inverted, volErr, dihedral, n, nf ? sprintf("%.1f", f / nf) : "n/a", nl ? sprintf("%.1f", l / nl) : "n/a",
         (n > 1 ? sprintf("%+.2f", slope * 600) : "n/a")
-    }' "$out/metrics.csv"
+    }' "$metrics"
 done
