@@ -19,7 +19,8 @@
 // (volume_driven_wall.h): their constraints, which keep each surface triangle's area, would
 // otherwise fold an endocardium that must shrink (surface turns of 80-111 degrees at 7-10 mm of
 // contraction on the patient hearts); they follow their paths the whole beat, at rest after the
-// relaxation. Two-way coupling can then push only the segments that do not beat.
+// relaxation. Under two-way coupling they keep their mass (heart_simulation.cpp), so the blood
+// can push the held wall as it pushes any other.
 #include <vector>
 
 #include "cardiac/beat_clock.h"
@@ -66,7 +67,7 @@ class CardiacCycle {
   [[nodiscard]] const std::vector<BeatingRegion>& regions() const { return m_regions; }
   [[nodiscard]] const Vec3& centre() const { return m_centre; }
   // The beating vertices follow their paths the whole beat (cycle.base_held, physiological): the
-  // simulation gives them no mass.
+  // simulation gives them no mass, except under two-way coupling.
   [[nodiscard]] bool kinematic() const { return m_kinematic; }
   // Checkpoints: each region's clock, anchor and end-systolic positions.
   void save(pbd::StateWriter& w) const;
