@@ -34,11 +34,13 @@ if [ -z "$heartsim" ]; then
 fi
 printf '%-28s %4s %8s %8s %5s %6s %8s %9s %8s %6s %8s %8s %10s\n' scenario exit sim_s wall_s lost inside \
   inverted vol_err min_dih beats EF_first EF_last drift/10min
+# A soak's checkpoints, oldest first (by part, then by time).
+checkpoints() { { ls "$1"/part-*/checkpoint_*.hsck 2>/dev/null || true; } | sort -t/ -k4,4V -k5,5; }
 for s in "${scenarios[@]}"; do
   soak=results/soak/$s
   latest=
   if [ "${RESUME:-0}" = 1 ]; then
-    latest=$(ls "$soak"/part-*/checkpoint_*.hsck 2>/dev/null | sort -t/ -k4,4V -k5,5 | tail -n 1 || true)
+    latest=$(checkpoints "$soak" | tail -n 1)
   fi
   [ -n "$latest" ] || rm -rf "$soak"
   parts=$(ls -d "$soak"/part-* 2>/dev/null | wc -l || true)
@@ -47,17 +49,16 @@ for s in "${scenarios[@]}"; do
   start=$(date +%s)
   echo "$start" > "$out/started_s.txt"
   code=0
+  from=("$s")
   if [ -n "$latest" ]; then
     echo "$latest" > "$out/resumed_from.txt"
-    "$heartsim" run --resume "$latest" --duration "$seconds" --threads "${THREADS:-$(nproc)}" --out "$out" \
-      --checkpoint-every "${CHECKPOINT_EVERY:-60}" > "$out/stdout.txt" 2> "$out/stderr.txt" || code=$?
-  else
-    "$heartsim" run "$s" --duration "$seconds" --threads "${THREADS:-$(nproc)}" --out "$out" \
-      --checkpoint-every "${CHECKPOINT_EVERY:-60}" > "$out/stdout.txt" 2> "$out/stderr.txt" || code=$?
+    from=(--resume "$latest")
   fi
+  "$heartsim" run "${from[@]}" --duration "$seconds" --threads "${THREADS:-$(nproc)}" --out "$out" \
+    --checkpoint-every "${CHECKPOINT_EVERY:-60}" > "$out/stdout.txt" 2> "$out/stderr.txt" || code=$?
   echo $(( $(date +%s) - start )) > "$out/wall_s.txt"
   # Only the newest two checkpoints are kept: a resume needs the last.
-  { ls "$soak"/part-*/checkpoint_*.hsck 2>/dev/null || true; } | sort -t/ -k4,4V -k5,5 | head -n -2 | xargs -r rm -f
+  checkpoints "$soak" | head -n -2 | xargs -r rm -f
   # Wall seconds over every part; a part that was stopped ran until its metrics.csv was last written.
   wall=0
   for part in "$soak"/part-*; do
