@@ -16,8 +16,8 @@
 #include "cardiac/heart_simulation.h"
 #include "cardiac/run_monitor.h"
 #include "exit_codes.h"
+#include "io/scenario/scenario_file.h"
 #include "simulation_setup.h"
-#include "io/scenario_file.h"
 
 namespace hs::app {
 namespace {

@@ -10,8 +10,8 @@
 #include "cardiac/heart_simulation.h"
 #include "cardiac/run_monitor.h"
 #include "exit_codes.h"
-#include "io/circulation_plots.h"
-#include "io/output_paths.h"
+#include "io/output/circulation_plots.h"
+#include "io/output/output_paths.h"
 #include "progress_bar.h"
 #include "simulation_setup.h"
 

@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "pbd/types.h"
+#include "pbd/core/types.h"
 
 namespace hs::app {
 

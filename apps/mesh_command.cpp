@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "exit_codes.h"
-#include "io/mesh_import.h"
-#include "io/mesh_summary.h"
+#include "io/mesh/mesh_import.h"
+#include "io/mesh/mesh_summary.h"
 #include "mesh_wall.h"
 
 namespace hs::app {

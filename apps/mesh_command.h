@@ -1,8 +1,8 @@
 #pragma once
-// `heartsim mesh FILE [--json]`: reads a patient mesh in any supported format (io/mesh_import.h)
+// `heartsim mesh FILE [--json]`: reads a patient mesh in any supported format (io/mesh/mesh_import.h)
 // and prints what it holds: counts, bounding box and a guess of its unit, markers, the volume
 // and worst quality of its tetrahedra, or for a surface its enclosed volume or boundary loops.
-// With --wall, also the tetrahedral wall it would build (cardiac/patient_wall.h): its size, worst
+// With --wall, also the tetrahedral wall it would build (cardiac/patient/patient_wall.h): its size, worst
 // quality, annuli and frame (apps/mesh_wall.cpp).
 // Exit 2 with the reader's one-line error on bad input.
 #include <string>

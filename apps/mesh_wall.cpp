@@ -8,8 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "cardiac/aha_segments.h"
-#include "io/patient_surfaces.h"
+#include "cardiac/anatomy/aha_segments.h"
+#include "io/mesh/patient_surfaces.h"
 
 namespace hs::app {
 namespace {

@@ -4,9 +4,9 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "cardiac/patient_wall.h"
-#include "io/mesh_import.h"
-#include "io/mesh_summary.h"
+#include "cardiac/patient/patient_wall.h"
+#include "io/mesh/mesh_import.h"
+#include "io/mesh/mesh_summary.h"
 #include "mesh_command.h"
 
 namespace hs::app {

@@ -16,7 +16,7 @@
 #include "cardiac/run_monitor.h"
 #include "contact_sheet.h"
 #include "exit_codes.h"
-#include "io/output_paths.h"
+#include "io/output/output_paths.h"
 #include "progress_bar.h"
 #include "render/anatomy_labels.h"
 #include "render/gl_context.h"

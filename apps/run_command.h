@@ -1,6 +1,6 @@
 #pragma once
 // `heartsim run SCENARIO|FILE.toml`: the headless runner; `heartsim run --resume FILE`
-// continues a checkpoint (io/checkpoint.h) to --duration, bitwise as the run without a stop.
+// continues a checkpoint (io/output/checkpoint.h) to --duration, bitwise as the run without a stop.
 #include <optional>
 #include <string>
 #include <vector>

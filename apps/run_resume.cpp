@@ -3,7 +3,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "io/scenario_file.h"
+#include "io/scenario/scenario_file.h"
 #include "simulation_setup.h"
 
 namespace hs::app {

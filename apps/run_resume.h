@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "cardiac/scenario.h"
-#include "io/checkpoint.h"
+#include "io/output/checkpoint.h"
 #include "run_command.h"
 
 namespace hs::app {

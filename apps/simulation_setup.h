@@ -11,7 +11,7 @@
 
 #include "cardiac/heart_simulation.h"
 #include "exit_codes.h"
-#include "io/scenario_file.h"
+#include "io/scenario/scenario_file.h"
 
 namespace hs::app {
 

@@ -15,7 +15,7 @@
 #include "cardiac/run_monitor.h"
 #include "dam_break_validation.h"
 #include "exit_codes.h"
-#include "io/scenario_file.h"
+#include "io/scenario/scenario_file.h"
 #include "progress_bar.h"
 #include "simulation_setup.h"
 #include "viz/plot.h"

@@ -8,12 +8,12 @@
 #include <iostream>
 
 #include "exit_codes.h"
-#include "io/checkpoint.h"
-#include "io/scenario_file.h"
-#include "simulation_setup.h"
+#include "io/output/checkpoint.h"
+#include "io/scenario/scenario_file.h"
 #include "render/anatomy_labels.h"
 #include "render/scene.h"
-#include "viewer/viewer_app.h"
+#include "simulation_setup.h"
+#include "viewer/app/viewer_app.h"
 
 namespace hs::app {
 namespace {

@@ -5,10 +5,10 @@
 #include <random>
 
 #include "../tests/pbd/box_mesh.h"
-#include "pbd/constraints.h"
-#include "pbd/fluid.h"
-#include "pbd/soft_body.h"
-#include "pbd/solver.h"
+#include "pbd/core/constraints.h"
+#include "pbd/core/soft_body.h"
+#include "pbd/core/solver.h"
+#include "pbd/fluid/fluid.h"
 
 namespace hs::pbd {
 namespace {

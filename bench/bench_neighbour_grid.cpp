@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "pbd/neighbour_grid.h"
+#include "pbd/grid/neighbour_grid.h"
 
 namespace hs::pbd {
 namespace {

@@ -5,9 +5,9 @@
 
 #include <string>
 
-#include "cardiac/patient_wall.h"
-#include "io/mesh_import.h"
-#include "io/patient_surfaces.h"
+#include "cardiac/patient/patient_wall.h"
+#include "io/mesh/mesh_import.h"
+#include "io/mesh/patient_surfaces.h"
 
 namespace hs::io {
 namespace {

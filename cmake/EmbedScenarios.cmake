@@ -3,13 +3,13 @@
 # .toml) and the exact bytes of every <dir>/*.toml, sorted by name, so the heartsim executable
 # needs no scenario files at run time. src/io/CMakeLists.txt re-runs it when any file changes.
 # The viewer's lessons (lessons/*.toml) are embedded the same way, under other names:
-# -DHEADER=viewer/lesson_internal.h -DNAMESPACE=hs::viewer::detail -DFUNCTION=embeddedLessons
+# -DHEADER=viewer/lessons/lesson_internal.h -DNAMESPACE=hs::viewer::detail -DFUNCTION=embeddedLessons
 # -DTYPE=EmbeddedLesson (each defaults to the scenarios' own).
 if(NOT SCENARIO_DIR OR NOT OUTPUT)
   message(FATAL_ERROR "EmbedScenarios.cmake: set SCENARIO_DIR and OUTPUT")
 endif()
 if(NOT HEADER)
-  set(HEADER "io/scenario_internal.h")
+  set(HEADER "io/scenario/scenario_internal.h")
 endif()
 if(NOT NAMESPACE)
   set(NAMESPACE "hs::io::detail")

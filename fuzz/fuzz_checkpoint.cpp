@@ -8,8 +8,8 @@
 
 #include "cardiac/heart_simulation.h"
 #include "cardiac/run_monitor.h"
-#include "io/checkpoint.h"
-#include "io/scenario_file.h"
+#include "io/output/checkpoint.h"
+#include "io/scenario/scenario_file.h"
 #include "one_line.h"
 
 namespace {

@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "io/mesh_import.h"
-#include "io/mesh_summary.h"
+#include "io/mesh/mesh_import.h"
+#include "io/mesh/mesh_summary.h"
 #include "one_line.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

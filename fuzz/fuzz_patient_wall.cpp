@@ -9,10 +9,10 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "cardiac/patient_wall.h"
-#include "io/mesh_import.h"
-#include "io/mesh_summary.h"
-#include "io/patient_surfaces.h"
+#include "cardiac/patient/patient_wall.h"
+#include "io/mesh/mesh_import.h"
+#include "io/mesh/mesh_summary.h"
+#include "io/mesh/patient_surfaces.h"
 #include "one_line.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "cardiac/lv_model.h"
-#include "io/scenario_file.h"
+#include "cardiac/anatomy/lv_model.h"
+#include "io/scenario/scenario_file.h"
 #include "one_line.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <string>
 
-#include "io/scenario_file.h"
+#include "io/scenario/scenario_file.h"
 #include "one_line.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

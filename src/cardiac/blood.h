@@ -1,16 +1,16 @@
 #pragma once
 // Blood for a scenario: where its particles start, the PBF solver settings that follow from
 // the scenario's clinical/physical parameters, and the measurements the runner reports.
-// The fluid itself (density constraint, viscosity, collisions) is the engine's, pbd/fluid*.h.
+// The fluid itself (density constraint, viscosity, collisions) is the engine's, pbd/fluid/.
 #include <cstddef>
 #include <vector>
 
-#include "cardiac/lv_model.h"
+#include "cardiac/anatomy/lv_model.h"
 #include "cardiac/scenario.h"
-#include "pbd/fluid_setup.h"
-#include "pbd/fluid_solver.h"
-#include "pbd/fluid_stats.h"
-#include "pbd/particles.h"
+#include "pbd/core/particles.h"
+#include "pbd/fluid/fluid_setup.h"
+#include "pbd/fluid/fluid_solver.h"
+#include "pbd/fluid/fluid_stats.h"
 
 namespace hs::cardiac {
 

@@ -2,18 +2,18 @@
 // The blood's path through the LV model and what happens on it, in pieces that each do one
 // job: inflow vessel -> mitral valve -> ventricle -> aortic valve -> outflow vessel -> (the
 // body) -> inflow vessel again.
-//   flow_path.h      the geometry: orifices, vessel ends, which region a point is in (LvModel)
-//   valves.h         the valves as gates, open by timing or by pressure
-//   flow_meter.h     crossings, flows, regions and pressures of each step
-//   blood_loop.h     blood that leaves through a vessel's end waits and re-enters (parking)
-//   filling_force.h  the filling pressure as a body force in the inflow vessel
+//   anatomy/flow_path.h      the geometry: orifices, vessel ends, which region a point is in
+//   circulation/valves.h     the valves as gates, open by timing or by pressure
+//   blood/flow_meter.h       crossings, flows, regions and pressures of each step
+//   blood/blood_loop.h       blood that leaves through a vessel's end waits and re-enters
+//   blood/filling_force.h    the filling pressure as a body force in the inflow vessel
 // HeartSimulation::step() calls each piece at its stage of the step.
-#include "cardiac/blood_loop.h"
-#include "cardiac/filling_force.h"
-#include "cardiac/flow_meter.h"
-#include "cardiac/lv_model.h"
+#include "cardiac/anatomy/lv_model.h"
+#include "cardiac/blood/blood_loop.h"
+#include "cardiac/blood/filling_force.h"
+#include "cardiac/blood/flow_meter.h"
+#include "cardiac/circulation/valves.h"
 #include "cardiac/scenario.h"
-#include "cardiac/valves.h"
 
 namespace hs::cardiac {
 

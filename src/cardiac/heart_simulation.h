@@ -11,22 +11,23 @@
 #include <optional>
 #include <vector>
 
+#include "cardiac/anatomy/lv_model.h"
 #include "cardiac/blood.h"
-#include "cardiac/cardiac_cycle.h"
+#include "cardiac/blood/vessel_ends.h"
 #include "cardiac/circulation.h"
+#include "cardiac/circulation/lumped_circulation.h"
 #include "cardiac/heart_sites.h"
-#include "cardiac/vessel_ends.h"
-#include "cardiac/lumped_circulation.h"
-#include "cardiac/volume_driven_wall.h"
-#include "cardiac/lv_model.h"
-#include "cardiac/recorded_beat.h"
+#include "cardiac/motion/cardiac_cycle.h"
+#include "cardiac/motion/recorded_beat.h"
+#include "cardiac/motion/volume_driven_wall.h"
+#include "cardiac/motion/wall_motion.h"
 #include "cardiac/scenario.h"
 #include "cardiac/step_profile.h"
-#include "pbd/fluid_solver.h"
-#include "pbd/particle_tet_collision.h"
-#include "pbd/solver.h"
-#include "pbd/step_context.h"
-#include "pbd/swept_contact.h"
+#include "pbd/contact/particle_tet_collision.h"
+#include "pbd/contact/swept_contact.h"
+#include "pbd/core/solver.h"
+#include "pbd/core/step_context.h"
+#include "pbd/fluid/fluid_solver.h"
 
 namespace hs::cardiac {
 
@@ -45,6 +46,9 @@ class HeartSimulation {
  public:
   // Throws std::invalid_argument for parameters the model or cycle reject.
   HeartSimulation(const Scenario& scenario, int threads);
+  // Its pieces refer to each other (the wall's motion to the cycle it drives): not copied or moved.
+  HeartSimulation(const HeartSimulation&) = delete;
+  HeartSimulation& operator=(const HeartSimulation&) = delete;
 
   void step();
   // Wall time per stage of each following step is added to `profile` (null: none, the default).
@@ -105,7 +109,7 @@ class HeartSimulation {
   // Largest vertex distance from its rest position, divided by the LV long axis.
   [[nodiscard]] Real restDeviationRelative() const;
 
-  // Checkpoints (io/checkpoint.h): everything a step changes, piece by piece; the rest (the
+  // Checkpoints (io/output/checkpoint.h): everything a step changes, piece by piece; the rest (the
   // model, the constraints, settings, scratch) is rebuilt from the scenario by the
   // constructor. load() expects a simulation built from the same scenario and throws
   // pbd::StateError for state of another.
@@ -115,6 +119,7 @@ class HeartSimulation {
  private:
   // Construction.
   void buildHeart();
+  void chooseWallMotion();
   void attachVessels();
   void buildLumpedCirculation();
   void buildRecordedBeat(const PatientWall& wall);
@@ -133,7 +138,6 @@ class HeartSimulation {
   void endStep(const pbd::StepContext& context);
 
   void reorderBlood();
-  pbd::ParticleTetSettings wallContactSettings(const pbd::StepContext& context) const;
 
   Scenario m_scenario;
   int m_threads = 1;
@@ -148,6 +152,9 @@ class HeartSimulation {
   std::unique_ptr<pbd::FluidSolver> m_fluid;
   std::unique_ptr<pbd::ParticleTetCollider> m_wallContact;  // heart and blood
   std::unique_ptr<pbd::SweptContact> m_sweptContact;        // heart and blood, blood.wall_contact = continuous
+  pbd::ParticleTetSettings m_contactSettings;               // heart and blood, from the scenario at set-up
+  pbd::SweptContactSettings m_sweptSettings;                // with m_sweptContact
+  std::unique_ptr<WallMotion> m_wallMotion;                 // heart: what moves the wall (wall_motion.h)
   std::optional<Circulation> m_circulation;                 // heart and blood
   std::optional<LumpedCirculation> m_lumped;                // circulation.lumped
   std::optional<VolumeDrivenWall> m_drivenWall;             // circulation.lumped

@@ -5,11 +5,11 @@
 #include <limits>
 #include <numbers>
 
-#include "cardiac/flow_path.h"
-#include "pbd/cell_grid.h"
-#include "pbd/closest_point.h"
-#include "pbd/sph_kernels.h"
-#include "pbd/surface_inside.h"
+#include "cardiac/anatomy/flow_path.h"
+#include "mesh/surface_inside.h"
+#include "pbd/core/closest_point.h"
+#include "pbd/fluid/sph_kernels.h"
+#include "pbd/grid/cell_grid.h"
 
 namespace hs::cardiac {
 namespace {

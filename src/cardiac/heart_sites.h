@@ -9,7 +9,7 @@
 #include <functional>
 #include <vector>
 
-#include "cardiac/lv_model.h"
+#include "cardiac/anatomy/lv_model.h"
 #include "cardiac/scenario.h"
 
 namespace hs::cardiac {

@@ -5,8 +5,8 @@
 #include <numbers>
 #include <sstream>
 
-#include "pbd/solver.h"
-#include "pbd/tet_mesh.h"
+#include "pbd/core/solver.h"
+#include "pbd/core/tet_mesh.h"
 
 namespace hs::cardiac {
 namespace {

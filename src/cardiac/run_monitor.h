@@ -12,13 +12,13 @@
 #include <span>
 #include <string>
 
-#include "cardiac/beat_metrics.h"
+#include "cardiac/anatomy/lv_model.h"
 #include "cardiac/blood.h"
 #include "cardiac/circulation.h"
-#include "cardiac/circulation_recorder.h"
+#include "cardiac/circulation/beat_metrics.h"
+#include "cardiac/circulation/circulation_recorder.h"
 #include "cardiac/heart_simulation.h"
-#include "cardiac/lv_model.h"
-#include "pbd/surface_hinges.h"
+#include "mesh/surface_hinges.h"
 
 namespace hs::cardiac {
 
@@ -77,7 +77,7 @@ struct StepSample {
   std::optional<CirculationSample> lumped;
   double contraction = 0, baseDescent = 0, vesselFill = 1;
   // With a heart and pump figures: the largest turn from rest (radians) of a hinge of the wall's
-  // surface that is smooth at rest (pbd/surface_hinges.h, run_monitor.cpp): a crease folds one.
+  // surface that is smooth at rest (mesh/surface_hinges.h, run_monitor.cpp): a crease folds one.
   double surfaceTurn = 0;
   // Two-way coupling: the cavity's change (m^3) from the blood's push on the wall in the step.
   double bloodPush = 0;

@@ -18,7 +18,7 @@ Vec3f centroid(const Ids& ids, const std::vector<pbd::Vec3>& x) {
 // level, apical septal (Cerqueira et al. 2002, Circulation 105:539).
 constexpr std::uint8_t kSeptalSegments[] = {2, 3, 8, 9, 14};
 
-// A vessel's bulge (an anatomical heart's atrium or aortic sinuses, cardiac/vessel_shape.h): its
+// A vessel's bulge (an anatomical heart's atrium or aortic sinuses, cardiac/anatomy/vessel_shape.h): its
 // lumen's vertices at rest more than a fifth wider from the vessel's axis than the orifice. None
 // for a straight vessel.
 std::vector<cardiac::Index> bulgeOf(const cardiac::LvModel& model, bool inflow) {

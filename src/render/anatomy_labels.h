@@ -5,7 +5,7 @@
 // anchor is taken from the model's own data as it is now (the orifices' rings, the vessels'
 // pinned far ends, the AHA septal segments, the wall's lowest point), never from fixed
 // coordinates, so the labels follow the moving wall and any shape of the model. The viewer
-// draws them with ImGui (viewer/scene_overlays.h), `heartsim render --labels` into its images.
+// draws them with ImGui (viewer/app/scene_overlays.h), `heartsim render --labels` into its images.
 #include <optional>
 #include <string>
 #include <string_view>

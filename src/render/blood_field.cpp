@@ -1,7 +1,7 @@
 #include "render/blood_field.h"
 
-#include "pbd/neighbour_grid.h"
-#include "pbd/sph_kernels.h"
+#include "pbd/fluid/sph_kernels.h"
+#include "pbd/grid/neighbour_grid.h"
 
 namespace hs::render {
 

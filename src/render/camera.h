@@ -35,7 +35,7 @@ struct Camera {
 };
 
 // front: onto the three-chamber plane, looking along -z (the mitral side, -x, on the viewer's
-// left, the outflow tract and the septum on the right; cardiac/aha_segments.h); left / right:
+// left, the outflow tract and the septum on the right; cardiac/anatomy/aha_segments.h); left / right:
 // from -x (lateral) / +x (septal) looking along +x / -x; top: from +y down onto the base, -x on
 // the viewer's left and +z (the front view's side) at the bottom of the image. Up is +y except
 // for top.

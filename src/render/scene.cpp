@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "cardiac/clinical_units.h"
+#include "cardiac/circulation/clinical_units.h"
 #include "render/blood_field.h"
 #include "render/valve_leaflets.h"
 

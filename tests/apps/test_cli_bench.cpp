@@ -7,7 +7,7 @@
 #include <string>
 
 #include "cli_runner.h"
-#include "io/scenario_file.h"
+#include "io/scenario/scenario_file.h"
 
 namespace {
 

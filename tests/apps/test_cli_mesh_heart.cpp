@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
-#include "io/scenario_file.h"
+#include "io/scenario/scenario_file.h"
 #include "recorded_beat_frames.h"
 
 namespace hs::testing {

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
-#include "io/vtk_writer.h"
+#include "io/output/vtk_writer.h"
 
 namespace hs::testing {
 namespace {
@@ -36,7 +36,7 @@ TEST(CliRun, JsonReportHasEveryField) {
     EXPECT_TRUE(j["tissue"].contains(key)) << key;
   for (const char* key : {"volume_min_m3", "volume_max_m3", "ejection_fraction"})
     EXPECT_TRUE(j["cavity"].contains(key)) << key;
-  // The heart's sizes, measured on the model (cardiac/lv_anatomy.h): here the thesis's scale.
+  // The heart's sizes, measured on the model (cardiac/anatomy/lv_anatomy.h): here the thesis's scale.
   for (const char* key : {"mitral_area_cm2", "aortic_area_cm2", "aortic_root_diameter_mm", "long_axis_mm"})
     EXPECT_GT(j["model"][key].get<double>(), 0) << key;
   EXPECT_GT(j["model"]["mitral_area_cm2"].get<double>(), j["model"]["aortic_area_cm2"].get<double>());

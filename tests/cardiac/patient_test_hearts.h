@@ -1,12 +1,12 @@
 #pragma once
 // Synthetic patient ventricles for the patient-wall tests: a half prolate spheroid (the
-// procedural heart's endocardium, cardiac/lv_model.h) of radius a and length c in mm, built in
+// procedural heart's endocardium, cardiac/anatomy/lv_model.h) of radius a and length c in mm, built in
 // the heart frame (base plane y = 0, apex at -y), then placed in a "scanner" frame by a known
 // rotation and translation.
 #include <Eigen/Geometry>
 #include <numbers>
 
-#include "cardiac/patient_wall_internal.h"
+#include "cardiac/patient/patient_wall_internal.h"
 #include "sphere_surface.h"
 
 namespace hs::cardiac::testing {

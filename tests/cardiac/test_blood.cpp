@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "cardiac/anatomy/lv_model.h"
 #include "cardiac/blood.h"
-#include "cardiac/lv_model.h"
-#include "pbd/tet_geometry.h"
+#include "pbd/core/tet_geometry.h"
 #include "thrown_message.h"
 
 namespace hs::cardiac {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cardiac/heart_simulation.h"
-#include "pbd/solver.h"
+#include "pbd/core/solver.h"
 #include "thrown_message.h"
 
 namespace hs::cardiac {

@@ -10,10 +10,10 @@
 #include <random>
 #include <vector>
 
+#include "cardiac/anatomy/flow_path.h"
+#include "cardiac/anatomy/lv_model.h"
 #include "cardiac/heart_sites.h"
-#include "pbd/sph_kernels.h"
-#include "cardiac/flow_path.h"
-#include "cardiac/lv_model.h"
+#include "pbd/fluid/sph_kernels.h"
 
 namespace hs::cardiac {
 namespace {

@@ -2,7 +2,7 @@
 // 1.2 mm walls round the atrium and the aortic root): blood next to a vessel's wall shot outward
 // at 40 mm a step (33 wall thicknesses, ten times the aortic jet's step at dt = 1 ms) never ends on the wall's other
 // side with blood.wall_contact = "continuous" (the thesis's push-out, then the swept check,
-// pbd/swept_contact.h), for many directions and positions; with "thesis" (the push-out alone)
+// pbd/contact/swept_contact.h), for many directions and positions; with "thesis" (the push-out alone)
 // some of the same shots go through: the control that shows the test can fail.
 #include <gtest/gtest.h>
 
@@ -11,11 +11,11 @@
 #include <random>
 #include <vector>
 
-#include "cardiac/lv_model.h"
-#include "pbd/particle_tet_collision.h"
-#include "pbd/swept_contact.h"
-#include "pbd/tet_mesh.h"
+#include "cardiac/anatomy/lv_model.h"
 #include "normal_geometry.h"
+#include "pbd/contact/particle_tet_collision.h"
+#include "pbd/contact/swept_contact.h"
+#include "pbd/core/tet_mesh.h"
 
 namespace hs::cardiac {
 namespace {

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "io/mesh_import.h"
-#include "pbd/tet_mesh.h"
+#include "io/mesh/mesh_import.h"
+#include "pbd/core/tet_mesh.h"
 
 namespace hs::testing {
 

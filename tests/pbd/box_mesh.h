@@ -1,7 +1,7 @@
 #pragma once
 // A box of n x n x n cubes, each split into 6 tets around its main diagonal (Kuhn
 // subdivision; conforming because every cube uses the same diagonal direction).
-#include "pbd/tet_mesh.h"
+#include "pbd/core/tet_mesh.h"
 
 namespace hs::pbd::testing {
 

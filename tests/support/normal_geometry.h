@@ -2,7 +2,7 @@
 // The real-size hearts' [model] sizes (scenarios/normal.toml: an adult's left ventricle with an
 // atrium, an aortic root with sinuses and both vessels leaning apart), for tests that build the
 // model without reading the scenario.
-#include "cardiac/lv_model.h"
+#include "cardiac/anatomy/lv_model.h"
 
 namespace hs::cardiac::testing {
 

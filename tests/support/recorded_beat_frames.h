@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "cardiac/patient_wall.h"
+#include "cardiac/patient/patient_wall.h"
 
 namespace hs::testing {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <map>
 
-#include "pbd/tet_mesh.h"
+#include "pbd/core/tet_mesh.h"
 
 namespace hs::pbd::testing {
 

@@ -1,6 +1,6 @@
 #pragma once
 // The thesis-scale LV model (LvGeometryParams defaults), built once for all tests of a binary.
-#include "cardiac/lv_model.h"
+#include "cardiac/anatomy/lv_model.h"
 
 namespace hs::cardiac::testing {
 

@@ -1,0 +1,90 @@
+#include "viewer/panels/blood_resolution.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace hs::viewer {
+
+const ResolutionLevel& resolutionLevel(BloodResolution level) {
+  return kResolutionLevels[std::size_t(level)];
+}
+
+const char* resolutionName(BloodResolution level) { return resolutionLevel(level).name; }
+
+std::optional<BloodResolution> parseResolution(const std::string& text) {
+  for (const ResolutionLevel& l : kResolutionLevels)
+    if (text == l.name) return l.level;
+  return std::nullopt;
+}
+
+double resolutionSpacingScale(BloodResolution level) {
+  return std::cbrt(1 / resolutionLevel(level).countFactor);
+}
+
+void applyResolution(BloodResolution level, cardiac::Scenario& scenario) {
+  if (level == kScenarioResolution) return;  // bitwise the scenario as written
+  cardiac::BloodSettings& blood = scenario.blood;
+  const auto scale = cardiac::Real(resolutionSpacingScale(level));
+  blood.spacing *= scale;
+  blood.radius *= scale;
+  blood.supportRadius *= scale;
+  if (blood.particles > 0)
+    blood.particles = std::max(1, int(std::lround(double(blood.particles) * resolutionLevel(level).countFactor)));
+}
+
+int particlesAtLevel(BloodResolution level, BloodResolution running, int runningCount) {
+  const double ratio = resolutionLevel(level).countFactor / resolutionLevel(running).countFactor;
+  return int(std::lround(double(runningCount) * ratio));
+}
+
+BloodResolution chooseResolution(std::span<const LevelMeasurement> measurements) {
+  std::optional<BloodResolution> finestHolding, coarsestMeasured;
+  for (const LevelMeasurement& m : measurements) {
+    if (!m.measured) continue;
+    if (!coarsestMeasured || m.level < *coarsestMeasured) coarsestMeasured = m.level;
+    if (m.pace >= kHoldsRealTimePace && (!finestHolding || m.level > *finestHolding)) finestHolding = m.level;
+  }
+  if (finestHolding) return *finestHolding;
+  return coarsestMeasured.value_or(kScenarioResolution);
+}
+
+bool worthMeasuring(std::span<const LevelMeasurement> measuredSoFar) {
+  for (const LevelMeasurement& m : measuredSoFar)
+    if (m.measured && m.pace < kHoldsRealTimePace) return false;
+  return true;
+}
+
+std::string withThousands(long value) {
+  const std::string digits = std::to_string(value < 0 ? -value : value);
+  std::string text = value < 0 ? "-" : "";
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) text += ',';
+    text += digits[i];
+  }
+  return text;
+}
+
+std::string resolutionLine(const ResolutionStatus& status, double livePace, bool behind) {
+  if (status.measuring) return "measuring this computer's pace: " + status.measuringWhat;
+  // A fixed count runs as given (the scenario's own level) until the student picks another.
+  const bool fixed = !status.fixedBy.empty() && status.level == kScenarioResolution;
+  std::string line = "blood: ";
+  if (!fixed) line += std::string(resolutionName(status.level)) + ", ";
+  line += withThousands(status.particles) + " particles";
+  if (fixed) line += " (" + status.fixedBy + ")";
+  char pace[64];
+  // Slow motion as the pace meter sees it now (a finer level picked, a busier machine) comes
+  // before what the start-up measurement promised.
+  if (behind && livePace < 0.95)
+    std::snprintf(pace, sizeof pace, ", %.2gx real time: slow motion", livePace);
+  else if (status.measuredPace && *status.measuredPace >= kHoldsRealTimePace)
+    std::snprintf(pace, sizeof pace, ", holds real time (%.2gx)", *status.measuredPace);
+  else if (status.measuredPace)
+    std::snprintf(pace, sizeof pace, ", measured %.2gx real time: slow motion", *status.measuredPace);
+  else
+    std::snprintf(pace, sizeof pace, ", holds real time");
+  return line + pace;
+}
+
+}  // namespace hs::viewer

@@ -1,0 +1,337 @@
+#include "viewer/panels/ui_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "render/scene.h"
+#include "viewer/plots/panel_widgets.h"
+
+namespace hs::viewer {
+namespace {
+
+// ImGui 1.86 has no SeparatorText.
+void sectionTitle(const char* title) {
+  ImGui::Separator();
+  ImGui::TextDisabled("%s", title);
+}
+
+ImU32 colourU32(const render::Vec3f& c) { return ImGui::GetColorU32(ImVec4(c.x(), c.y(), c.z(), 1)); }
+
+// The blood colour scale as a horizontal bar, 0 on the left, top on the right.
+void scaleLegend(const char* title, double speedMax, const char* unit) {
+  ImGui::TextUnformatted(title);
+  const float width = ImGui::GetContentRegionAvail().x, height = 14;
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  constexpr int kSegments = 32;
+  for (int i = 0; i < kSegments; ++i) {
+    const float x0 = origin.x + width * float(i) / kSegments,
+                x1 = origin.x + width * float(i + 1) / kSegments;
+    const ImU32 left = colourU32(render::speedColour(double(i) / kSegments));
+    const ImU32 right = colourU32(render::speedColour(double(i + 1) / kSegments));
+    draw->AddRectFilledMultiColor(ImVec2(x0, origin.y), ImVec2(x1, origin.y + height), left, right, right,
+                                  left);
+  }
+  draw->AddRect(origin, ImVec2(origin.x + width, origin.y + height), IM_COL32(90, 90, 100, 255));
+  ImGui::Dummy(ImVec2(width, height));
+  char top[32], mid[32];
+  std::snprintf(top, sizeof top, "%g", speedMax);
+  std::snprintf(mid, sizeof mid, "%g", speedMax / 2);
+  ImGui::TextUnformatted("0");
+  ImGui::SameLine(width / 2 - ImGui::CalcTextSize(mid).x / 2);
+  ImGui::TextUnformatted(mid);
+  ImGui::SameLine(width - ImGui::CalcTextSize(top).x + ImGui::GetStyle().WindowPadding.x);
+  ImGui::TextUnformatted(top);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Blue = 0, yellow = %g %s or more", speedMax, unit);
+}
+
+// Blood coloured by where it started: one swatch per origin.
+void originLegend() {
+  ImGui::TextUnformatted("Blood by where it started");
+  for (const render::OriginKeyRow& row : render::originKey()) {
+    const render::Vec3f c = render::originColour(row.origin);
+    ImGui::TextColored(ImVec4(c.x(), c.y(), c.z(), 1), "o");
+    ImGui::SameLine();
+    ImGui::TextUnformatted(row.label);
+  }
+}
+
+void simulationSection(ViewerControls& c, const ViewerStatus& s) {
+  if (ImGui::Button(c.playing ? "Pause" : "Play", ImVec2(54, 0))) c.playing = !c.playing;
+  tooltip("Run or pause the simulation (Space)");
+  ImGui::SameLine();
+  if (ImGui::Button("Step", ImVec2(42, 0))) c.stepRequested = true;
+  char stepTip[96];
+  std::snprintf(stepTip, sizeof stepTip, "Advance one time step of %g ms and pause (S)", s.dt * 1000);
+  tooltip(stepTip);
+  ImGui::SameLine();
+  if (ImGui::Button("Reset", ImVec2(46, 0))) c.resetRequested = true;
+  tooltip("Restart the scenario from t = 0 (Backspace)");
+  ImGui::SameLine();
+  if (ImGui::Button("Picture")) c.screenshotRequested = true;
+  tooltip("Save the window as a PNG in the working directory (P); the message in the scene gives its path");
+  ImGui::SameLine();
+  if (ImGui::Button("Help")) c.showHelp = !c.showHelp;
+  tooltip("What the numbers, colours and controls mean; mouse and keys (H or F1)");
+  if (ImGui::Button("Save state")) c.saveStateRequested = true;
+  tooltip("Save the whole simulation as checkpoint_<time>s.hsck in the working directory (F5); "
+          "heartsim view --resume FILE or heartsim run --resume FILE continues it from there");
+  ImGui::SliderFloat("speed", &c.speed, 0.01f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
+  tooltip("Simulated seconds per second of wall-clock time (1x = real time)");
+  if (const std::string shortfall = speedShortfall(double(c.speed), s); !shortfall.empty()) {
+    ImGui::TextColored(ImVec4(0.75f, 0.35f, 0.0f, 1), "%s", shortfall.c_str());
+    tooltip("The simulation computes as fast as this machine allows and still falls short of the "
+            "speed asked: the heart is shown in slow motion, every step of it computed. Fewer blood "
+            "particles (Blood section) run faster.");
+  }
+  if (s.hasBlood) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", resolutionLine(s.resolution, s.realTimeFactor, s.behind).c_str());
+    ImGui::PopStyleColor();
+    tooltip("The blood's resolution (Blood section): at start-up the viewer measures each level on this "
+            "computer and picks the finest that keeps up with real time; a finer one runs in slow motion.");
+  }
+}
+
+// A folding section of the panel; opening one closes the one open before.
+bool section(const char* title, PanelSection id, PanelSection& open) {
+  ImGui::SetNextItemOpen(open == id, ImGuiCond_Always);
+  const bool shown = ImGui::CollapsingHeader(title);
+  if (ImGui::IsItemToggledOpen()) open = shown ? id : PanelSection::None;
+  return shown;
+}
+
+void scenarioSection(ViewerControls& c, const ViewerStatus& s, const std::vector<ScenarioChoice>& scenarios) {
+  const char* preview = c.scenarioIndex >= 0 && c.scenarioIndex < int(scenarios.size())
+                            ? scenarios[std::size_t(c.scenarioIndex)].name.c_str()
+                            : s.scenarioName.c_str();
+  if (ImGui::BeginCombo("scenario", preview, ImGuiComboFlags_HeightLarge)) {
+    for (const ScenarioGroup group : {ScenarioGroup::HumanHeart, ScenarioGroup::ThesisModel, ScenarioGroup::BloodOnly}) {
+      ImGui::TextDisabled("%s", scenarioGroupTitle(group));
+      for (int i = 0; i < int(scenarios.size()); ++i) {
+        const ScenarioChoice& choice = scenarios[std::size_t(i)];
+        if (choice.group != group) continue;
+        const bool selected = i == c.scenarioIndex;
+        ImGui::Indent(8);
+        if (ImGui::Selectable(choice.name.c_str(), selected) && !selected) {
+          c.scenarioIndex = i;
+          c.scenarioChanged = true;
+        }
+        ImGui::Unindent(8);
+        if (!choice.description.empty()) tooltip(choice.description.c_str());
+      }
+    }
+    ImGui::EndCombo();
+  }
+  tooltip("Built-in scenario presets (scenarios/*.toml); choosing one restarts the simulation");
+  if (!s.hasHeart) return;
+  if (c.circulation.lumped) {
+    // The lumped circulation drives the wall: its volume, not a contraction, moves it (and it
+    // needs the beat: no cycle checkbox); its heart rate sits with the circulation's settings.
+    ImGui::TextDisabled("the lumped circulation drives the wall");
+    tooltip("circulation.lumped: the wall follows the lumped ventricle's volume. Heart rate, preload, "
+            "afterload and contractility are in the Circulation section below.");
+    return;
+  }
+  if (!s.recordedBeat.empty()) {
+    // A recorded beat ([motion]) moves the wall as recorded: no contraction, rate or region of
+    // the cycle's applies (the scenario refuses them), so none is offered.
+    ImGui::TextDisabled("a recorded beat drives the wall");
+    tooltip(("[motion]: the endocardium follows " + s.recordedBeat +
+             " recorded from a patient; the recording sets the heart rate and how the wall moves")
+                .c_str());
+    return;
+  }
+  if (ImGui::Checkbox("cardiac cycle", &c.cycleEnabled)) c.cycleChanged = true;
+  tooltip("Let the wall beat (systole / diastole); changing it restarts the simulation");
+  ImGui::BeginDisabled(!c.cycleEnabled);
+  ImGui::SliderFloat("heart rate", &c.heartRateBpm, 30, 180, "%.0f bpm");
+  if (ImGui::IsItemDeactivatedAfterEdit()) c.cycleChanged = true;
+  tooltip(s.physiological
+              ? "Beats per minute (physiological timing); applied on release, restarts the simulation"
+              : "Beats per minute; switches the cycle to physiological timing (the scenario uses the "
+                "thesis's step-count timing) and restarts the simulation");
+  // Contraction strength, in the scenario's own timing (the sliders reach 40% of the cavity's
+  // radius: beyond that the wall folds).
+  if (s.physiological) {
+    ImGui::SliderFloat("contraction", &c.contraction, 0, 0.4f * s.heartSize, "%.3g m");
+    if (ImGui::IsItemDeactivatedAfterEdit()) c.cycleChanged = true;
+    tooltip("How far each beating point of the wall moves inward in one systole: a stronger "
+            "contraction ejects more (higher EF). Applied on release; restarts the simulation");
+  } else {
+    ImGui::SliderInt("phase length", &c.beatingDuration, 1, 40, "%d steps");
+    if (ImGui::IsItemDeactivatedAfterEdit()) c.cycleChanged = true;
+    tooltip("Thesis timing: time steps of each systole and each diastole (Table 5.4: 8). "
+            "Applied on release; restarts the simulation");
+    ImGui::SliderFloat("displacement", &c.beatingDisplace, 0, 0.1f * s.heartSize, "%.3g m/step");
+    if (ImGui::IsItemDeactivatedAfterEdit()) c.cycleChanged = true;
+    tooltip("Thesis timing: how far a beating point moves inward in each systolic step "
+            "(Table 5.4: 0.08 m). Applied on release; restarts the simulation");
+  }
+  ImGui::EndDisabled();
+}
+
+void displaySection(ViewerControls& c, const ViewerStatus& s) {
+  if (s.hasHeart) {
+    ImGui::Checkbox("labels and flow arrows", &c.showLabels);
+    tooltip("Name the left ventricle, the inflow (from the left atrium), the mitral and aortic valves, "
+            "the aorta, the septum and the apex on the heart, with arrows the way blood flows forward (N)");
+    ImGui::Checkbox("clipping plane", &c.clip);
+    tooltip("Cut the wall open to see into the cavity (removes what lies in front of the plane z = const)");
+    ImGui::BeginDisabled(!c.clip);
+    ImGui::SliderFloat("clip z", &c.clipZ, s.clipMin, s.clipMax, "%.3f m");
+    tooltip("Position of the cutting plane z = const (m); everything at larger z (toward the viewer in the front view) is removed: z = 0 opens the three-chamber plane");
+    ImGui::EndDisabled();
+    ImGui::SliderFloat("wall opacity", &c.wallOpacity, 0.1f, 1.0f, "%.2f");
+    tooltip("Below 1 the wall is drawn see-through (0.1 to 1, no unit)");
+  }
+  if (s.hasBlood) {
+    const char* kinds[] = {"speed", "pressure", "origin"};
+    ImGui::Combo("blood colour", &c.bloodColour, kinds, 3);
+    tooltip("What the blood's colour shows: its speed (m/s) or its pressure (mmHg, from the density "
+            "solve), both smoothed over the neighbours, or where it started (inflow vessel, "
+            "ventricle, or outside, through the loop)");
+    const char* looks[] = {"liquid", "spheres"};
+    ImGui::Combo("blood look", &c.bloodLook, looks, 2);
+    tooltip("Liquid: a smooth surface over the particles (screen-space fluid); spheres: each "
+            "particle as a ball. The liquid's resolution is lowered when needed to keep 25 fps");
+    const char* flows[] = {"off", "streaks", "arrows"};
+    ImGui::Combo("flow", &c.flowView, flows, 3);
+    tooltip("Streaks: where blood went over the last 40 ms; arrows: its velocity now (the distance "
+            "it covers in 10 ms). Both coloured by speed over pale blood");
+  }
+  ImGui::TextUnformatted("view");
+  ImGui::SameLine();
+  constexpr struct {
+    const char* label;
+    render::View view;
+    const char* tip;
+  } kViews[] = {{"front", render::View::Front, "Anterior view, from +z (1 or F)"},
+                {"left", render::View::Left, "From -x, the lateral side (2 or L)"},
+                {"right", render::View::Right, "From +x, the septal side (3)"},
+                {"top", render::View::Top, "From +y onto the base (4 or T)"}};
+  for (const auto& v : kViews) {
+    if (ImGui::SmallButton(v.label)) c.viewRequested = v.view;
+    tooltip(v.tip);
+    ImGui::SameLine();
+  }
+  if (ImGui::SmallButton("reset")) c.resetCameraRequested = true;
+  tooltip("Back to the front view, framing the heart (R)");
+}
+
+}  // namespace
+
+const char* scenarioGroupTitle(ScenarioGroup group) {
+  switch (group) {
+    case ScenarioGroup::HumanHeart: return "Human-size hearts";
+    case ScenarioGroup::ThesisModel: return "The thesis's models (metres across, not a human heart)";
+    case ScenarioGroup::BloodOnly: return "Blood alone (no heart)";
+  }
+  return "";
+}
+
+std::string speedShortfall(double asked, const ViewerStatus& status) {
+  if (!status.behind) return "";
+  char text[96];
+  std::snprintf(text, sizeof text, "asked %.2gx, reaching %.2gx: slow motion", asked, status.realTimeFactor);
+  return text;
+}
+
+void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
+                      const std::vector<ScenarioChoice>& scenarios, int windowHeight) {
+  beginSidePanel("heartsim", "heartsim viewer", 0, kPanelWidth, windowHeight);
+  simulationSection(controls, status);
+  ImGui::Spacing();
+  sectionTitle("Scenario");
+  scenarioSection(controls, status, scenarios);
+  PanelSection& open = controls.openSection;
+  if (controls.circulation.lumped && section("Circulation", PanelSection::Circulation, open))
+    drawCirculationSection(controls.circulation, controls.heartRateBpm, controls.cycleChanged,
+                           controls.showCirculation);
+  if (status.hasBlood && section("Blood", PanelSection::Blood, open))
+    drawBloodSection(controls.blood, status.resolution, status.hasHeart, controls.circulation.lumped,
+                     status.wallYields);
+  if (status.hasHeart && status.recordedBeat.empty() && section("Beating region", PanelSection::Region, open))
+    drawRegionSection(controls.region, status.region);
+  if (section("Display", PanelSection::Display, open)) displaySection(controls, status);
+  endSidePanel();
+}
+
+float drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge) {
+  if (!status.hasHeart && !status.hasBlood) return bottomEdge;
+  constexpr float kMargin = 10, kWidth = 260;
+  ImGui::SetNextWindowPos(ImVec2(leftEdge + kMargin, bottomEdge - kMargin), ImGuiCond_Always,
+                          ImVec2(0, 1));
+  // A fixed width: the speed bar fills the window, which must not size itself after it.
+  ImGui::SetNextWindowSize(ImVec2(kWidth, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowBgAlpha(0.75f);
+  ImGui::Begin("colour key", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+  if (status.hasHeart) {
+    ImGui::TextColored(ImVec4(0.85f, 0.3f, 0.32f, 1), "red");
+    ImGui::SameLine();
+    ImGui::TextUnformatted("myocardium, dark red: cut face");
+    const render::Vec3f beating = render::beatingColour(render::regionColour(cardiac::Region::Myocardium));
+    ImGui::TextColored(ImVec4(beating.x(), beating.y(), beating.z(), 1), "orange");
+    ImGui::SameLine();
+    ImGui::TextUnformatted("the chosen beating region");
+    ImGui::TextUnformatted("light: base plate and vessels");
+    if (std::find(status.region.outOfStep.begin(), status.region.outOfStep.end(), true) !=
+        status.region.outOfStep.end()) {
+      const render::Vec3f v = render::outOfStepColour(render::regionColour(cardiac::Region::Myocardium));
+      ImGui::TextColored(ImVec4(v.x(), v.y(), v.z(), 1), "violet");
+      ImGui::SameLine();
+      ImGui::TextUnformatted("beats out of step");
+    }
+  }
+  if (status.hasBlood && status.flowView != 0) {
+    if (status.hasHeart) ImGui::Spacing();
+    scaleLegend("Flow lines: speed (m/s)", status.speedMax, "m/s");
+  } else if (status.hasBlood) {
+    if (status.hasHeart) ImGui::Spacing();
+    switch (render::BloodColour(status.bloodColour)) {
+      case render::BloodColour::Speed: scaleLegend("Blood speed (m/s)", status.speedMax, "m/s"); break;
+      case render::BloodColour::Pressure:
+        scaleLegend("Blood pressure (mmHg)", status.pressureMax, "mmHg");
+        break;
+      case render::BloodColour::Origin: originLegend(); break;
+    }
+  }
+  const float top = ImGui::GetWindowPos().y;
+  ImGui::End();
+  return top;
+}
+
+void drawStatusOverlay(const ViewerStatus& status, float rightEdge, float bottomEdge) {
+  constexpr float kMargin = 10;
+  ImGui::SetNextWindowPos(ImVec2(rightEdge - kMargin, bottomEdge - kMargin), ImGuiCond_Always, ImVec2(1, 1));
+  ImGui::SetNextWindowBgAlpha(0.75f);
+  ImGui::Begin("status", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                   ImGuiWindowFlags_NoNav);
+  ImGui::Text("%s", status.scenarioName.c_str());
+  ImGui::Text("t = %.3f s", status.time);
+  if (*status.phase) ImGui::Text("phase: %s", status.phase);
+  // The thesis-scale models are metres across: their volumes read better in m^3 (pump_readout.h).
+  if (status.cavity >= 0 && status.pump.scale.thesis)
+    ImGui::Text("cavity volume: %.3g m^3 (thesis scale)", status.cavity);
+  else if (status.cavity >= 0)
+    ImGui::Text("cavity volume: %.1f mL", status.cavity * status.pump.scale.volume);
+  ImGui::Text("frame: %.1f ms (%.0f fps)", status.frameMs, status.frameMs > 0 ? 1000 / status.frameMs : 0.0);
+  if (!status.liquidNote.empty()) {
+    // Wrapped to the corner's usual width, so that it still fits beside the colour key.
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 220);
+    ImGui::TextWrapped("%s", status.liquidNote.c_str());
+    ImGui::PopTextWrapPos();
+  }
+  if (status.behind)
+    ImGui::TextColored(ImVec4(0.85f, 0.45f, 0.05f, 1), "slow motion: %.2gx real time", status.realTimeFactor);
+  ImGui::End();
+}
+
+}  // namespace hs::viewer
