@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -60,6 +61,7 @@ nlohmann::json measure(cardiac::HeartSimulation& sim, std::size_t particles, int
   cardiac::RunMonitor monitor(sim, cardiac::MonitorSettings::healthOnly());
   for (int i = 0; i < 50; ++i) sim.step();  // warm-up: caches, first-touch, lazy allocation
   if (profile) *profile = {};
+  const std::int64_t reducedBefore = sim.threadGovernor().reducedSteps();
   long steps = 0;
   std::vector<double> windowRates;
   double activeSum = 0;
@@ -89,6 +91,11 @@ nlohmann::json measure(cardiac::HeartSimulation& sim, std::size_t particles, int
           {"active_particles_mean", active},
           {"ns_per_active_particle_step", 1e9 / (stepsPerSecond * std::max(active, 1.0))},
           {"threads", threads},
+          // The thread governor's choice (pbd/core/thread_governor.h): the measured steps that
+          // ran on fewer threads than allowed, as a share (its probes' and, on a busy machine,
+          // its holds').
+          {"fewer_threads_share",
+           double(sim.threadGovernor().reducedSteps() - reducedBefore) / double(std::max(1L, steps))},
           {"steps", steps},
           {"seconds", elapsed},
           {"steps_per_s_min", windowRates.front()},
@@ -331,6 +338,9 @@ int benchCommand(const BenchOptions& options) {
                   c->name.c_str(), r["steps_per_s"].get<double>(), r["ns_per_particle_step"].get<double>(),
                   r["particles"].get<std::size_t>(), threads, r["peak_rss_mb"].get<double>(),
                   r["seconds"].get<double>());
+      if (threads > 1 && r.contains("fewer_threads_share"))
+        std::printf("%-24s %11.0f%% of the steps on fewer threads (the governor's choice)\n", "",
+                    100 * r["fewer_threads_share"].get<double>());
     }
     report["cases"].push_back(r);
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -23,8 +24,10 @@ namespace hs::cardiac {
 // had already cleared the blood from the wall's final place, and the blood moved `normal`'s
 // cavity by 0.01 mL at most in 10 s instead of 0.76).
 void HeartSimulation::step() {
+  const auto start = std::chrono::steady_clock::now();
   const pbd::StepContext context =
-      pbd::makeStepContext(m_scenario.simulation.dt, m_scenario.simulation.gravity, m_threads, m_steps);
+      pbd::makeStepContext(m_scenario.simulation.dt, m_scenario.simulation.gravity, m_governor.threads(), m_steps);
+  m_contactSettings.threads = m_sweptSettings.threads = context.threads;
   StageLaps laps(m_profile);
   beginStep(context);                                                       // reorder, valves, flow meter
   laps.lap(StepStage::Begin);
@@ -47,6 +50,7 @@ void HeartSimulation::step() {
   if (m_profile) ++m_profile->steps;
   ++m_steps;
   if (m_recordedBeat) m_recordedBeat->observe(time(), double(cavityVolume()));
+  m_governor.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 
 void HeartSimulation::projectWall(const pbd::StepContext& context, StageLaps& laps) {
@@ -155,10 +159,10 @@ void HeartSimulation::resolveBloodContacts(const pbd::StepContext&) {
 }
 
 // What crossed where, then the loop: blood past a vessel's end waits, waiting blood re-enters.
-void HeartSimulation::endStep(const pbd::StepContext&) {
+void HeartSimulation::endStep(const pbd::StepContext& context) {
   if (!m_circulation) return;
   Circulation& c = *m_circulation;
-  c.meter.measure(m_particles, m_firstBloodParticle, m_fluid->pressures(), c.valves.states(), m_threads);
+  c.meter.measure(m_particles, m_firstBloodParticle, m_fluid->pressures(), c.valves.states(), context.threads);
   const BloodLoop::Turnover turnover =
       c.settings.loop ? c.loop.circulate(m_particles, m_firstBloodParticle) : BloodLoop::Turnover{};
   c.meter.recordLoop(turnover.returned, turnover.reentered, c.loop.waiting());

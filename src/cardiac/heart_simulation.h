@@ -27,6 +27,7 @@
 #include "pbd/contact/swept_contact.h"
 #include "pbd/core/solver.h"
 #include "pbd/core/step_context.h"
+#include "pbd/core/thread_governor.h"
 #include "pbd/fluid/fluid_solver.h"
 
 namespace hs::cardiac {
@@ -51,6 +52,10 @@ class HeartSimulation {
   HeartSimulation& operator=(const HeartSimulation&) = delete;
 
   void step();
+  // How many of the `threads` each step uses is chosen from the measured time of recent steps
+  // (thread_governor.h; the state is the same on any count). Replaces the governor's settings.
+  void governThreads(const pbd::ThreadGovernorSettings& settings) { m_governor = pbd::ThreadGovernor(m_threads, settings); }
+  [[nodiscard]] const pbd::ThreadGovernor& threadGovernor() const { return m_governor; }
   // Wall time per stage of each following step is added to `profile` (null: none, the default).
   void attachProfile(StepProfile* profile) { m_profile = profile; }
 
@@ -140,7 +145,8 @@ class HeartSimulation {
   void reorderBlood();
 
   Scenario m_scenario;
-  int m_threads = 1;
+  int m_threads = 1;  // the most a step may use
+  pbd::ThreadGovernor m_governor{1};
   StepProfile* m_profile = nullptr;  // not owned; see attachProfile
   std::optional<LvModel> m_model;
   pbd::Particles m_particles;

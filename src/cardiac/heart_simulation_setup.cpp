@@ -56,7 +56,7 @@ void checkContraction(const CycleSettings& cycle, const LvModel& model) {
 }  // namespace
 
 HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
-    : m_scenario(scenario), m_threads(threads) {
+    : m_scenario(scenario), m_threads(threads), m_governor(threads) {
   if (!scenario.heart && !scenario.blood.enabled)
     throw std::invalid_argument("model.enabled: with no heart and no blood (blood.enabled = false) there is "
                                 "nothing to simulate");
@@ -278,12 +278,10 @@ void HeartSimulation::buildBlood() {
         if (wetted[t[0]] && wetted[t[1]] && wetted[t[2]]) m_lumenSurface.push_back(t);
     m_circulation.emplace(*m_model, m_scenario);
     m_contactSettings.radius = b.radius;
-    m_contactSettings.threads = m_threads;
     m_contactSettings.twoWay = m_scenario.circulation.twoWay;
     m_contactSettings.slip = m_scenario.circulation.wallSlip;
     m_sweptSettings.radius = b.radius;
     m_sweptSettings.slip = m_scenario.circulation.wallSlip;
-    m_sweptSettings.threads = m_threads;
     if (m_lumped) m_ends.emplace(m_model->flowPath, m_scenario.blood);
     // The vessels' fill is measured on their lumens between the ends' buffers.
     m_vesselSites = vesselSites(m_scenario, *m_model);

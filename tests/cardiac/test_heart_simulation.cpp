@@ -182,12 +182,30 @@ TEST(HeartSimulation, BloodOriginFollowsTheParticleThroughAReorder) {
 TEST(HeartSimulation, SameStateOnOneAndTwoThreads) {
   const Scenario s = heartWithBlood(300);
   HeartSimulation one(s, 1), two(s, 2);
+  two.governThreads({.adaptive = false});  // every step on both threads, however busy the machine
   for (int k = 0; k < 60; ++k) {
     one.step();
     two.step();
   }
   EXPECT_EQ(pbd::stateHash(one.particles()), pbd::stateHash(two.particles()));
   EXPECT_EQ(one.particles().id, two.particles().id);
+}
+
+// The thread governor changes the count between steps (here every two or three steps: probes of
+// two steps on each count, holds of one): the state is the one thread's, bit for bit.
+TEST(HeartSimulation, TheThreadCountMayChangeBetweenStepsWithoutChangingTheState) {
+  const Scenario s = heartWithBlood(300);
+  HeartSimulation one(s, 1), governed(s, 2);
+  governed.governThreads({.probeSteps = 2, .holdSteps = 1, .holdSeconds = 0, .maxHoldScale = 1});
+  for (int k = 0; k < 60; ++k) {
+    one.step();
+    governed.step();
+  }
+  EXPECT_EQ(pbd::stateHash(one.particles()), pbd::stateHash(governed.particles()));
+  EXPECT_EQ(one.particles().id, governed.particles().id);
+  // Both counts were used: each probe of one thread is 2 of every 5 steps.
+  EXPECT_GE(governed.threadGovernor().reducedSteps(), 60 * 2 / 5 - 2);
+  EXPECT_LT(governed.threadGovernor().reducedSteps(), 60);
 }
 
 // Thesis cycle: the myocardium is moved inward every systolic step, so the cavity is smaller
