@@ -6,8 +6,8 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdint>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -147,10 +147,11 @@ BenchCase damBreakCase(const std::string& name, int nx, int ny, int nz) {
 // A real-size heart with its blood, stepped as the viewer steps it (health checks, no files):
 // the median window's steps per second, and the mean wall time of each stage of a step
 // (cardiac::StepStage) over all measured steps, in milliseconds.
-BenchCase heartCase(const std::string& name) {
+BenchCase heartCase(const std::string& name, cardiac::BloodResolution level) {
   return {name, "the " + name + " scenario stepped for the measuring time, with each stage's time per step",
-          [name](int threads, double seconds) {
-            const cardiac::Scenario scenario = io::loadScenario(name);
+          [name, level](int threads, double seconds) {
+            cardiac::Scenario scenario = io::loadScenario(name);
+            cardiac::applyResolution(level, scenario);
             cardiac::HeartSimulation sim(scenario, threads);
             cardiac::StepProfile profile;
             sim.attachProfile(&profile);
@@ -166,16 +167,18 @@ BenchCase heartCase(const std::string& name) {
             r["stages_ms_per_step"] = stages;
             r["stages_ms_total"] = total;
             r["iterations"] = scenario.blood.iterations;
+            r["resolution"] = cardiac::resolutionName(level);
             r["dt_s"] = scenario.simulation.dt;
             r["real_time_factor"] = r["steps_per_s"].get<double>() * double(scenario.simulation.dt);
             return r;
           }};
 }
 
-BenchCase scenarioCase(const std::string& name) {
+BenchCase scenarioCase(const std::string& name, cardiac::BloodResolution level) {
   return {name, "the " + name + " scenario from t = 0 to its end (median of 3 fresh runs)",
-          [name](int threads, double) {
-            const cardiac::Scenario scenario = io::loadScenario(name);
+          [name, level](int threads, double) {
+            cardiac::Scenario scenario = io::loadScenario(name);
+            cardiac::applyResolution(level, scenario);
             const auto steps = static_cast<long>(std::round(double(scenario.simulation.duration) /
                                                             double(scenario.simulation.dt)));
             std::vector<double> times;
@@ -196,6 +199,7 @@ BenchCase scenarioCase(const std::string& name) {
                                   {"particles", particles},
                                   {"threads", threads},
                                   {"iterations", scenario.blood.iterations},
+                                  {"resolution", cardiac::resolutionName(level)},
                                   {"seconds", seconds},
                                   {"steps", steps},
                                   {"seconds_min", times.front()},
@@ -204,17 +208,19 @@ BenchCase scenarioCase(const std::string& name) {
           }};
 }
 
-std::vector<BenchCase> allCases() {
+// The named scenarios' blood at `level` (--resolution); the dam breaks keep the counts their
+// names give, and tissue-lv has no blood.
+std::vector<BenchCase> allCases(cardiac::BloodResolution level = cardiac::kScenarioResolution) {
   return {
-      scenarioCase("paper-vessel"),
-      scenarioCase("paper-vessel-beating"),
-      scenarioCase("paper-chamber"),
-      scenarioCase("paper-chamber-beating"),
-      heartCase("normal"),
-      heartCase("irregular"),
-      heartCase("inconsistent"),
-      heartCase("patient-biv-me"),
-      heartCase("idealized-lv"),
+      scenarioCase("paper-vessel", level),
+      scenarioCase("paper-vessel-beating", level),
+      scenarioCase("paper-chamber", level),
+      scenarioCase("paper-chamber-beating", level),
+      heartCase("normal", level),
+      heartCase("irregular", level),
+      heartCase("inconsistent", level),
+      heartCase("patient-biv-me", level),
+      heartCase("idealized-lv", level),
       damBreakCase("pbf-dam-break-1k", 10, 20, 5),
       damBreakCase("pbf-dam-break-10k", 25, 40, 10),
       damBreakCase("pbf-dam-break-100k", 50, 80, 25),
@@ -290,7 +296,9 @@ std::vector<std::string> benchCaseNames() {
 }
 
 int benchCommand(const BenchOptions& options) {
-  const std::vector<BenchCase> cases = allCases();
+  const std::optional<cardiac::BloodResolution> level = resolutionOrReport(options.resolution);
+  if (!level) return kExitBadInput;
+  const std::vector<BenchCase> cases = allCases(*level);
   std::vector<const BenchCase*> chosen;
   for (const std::string& name : options.cases) {
     const BenchCase* found = nullptr;
@@ -312,7 +320,7 @@ int benchCommand(const BenchOptions& options) {
       std::cerr << "heartsim: error: " << e.what() << '\n';
       return kExitBadInput;
     }
-    files.push_back(heartCase(path));
+    files.push_back(heartCase(path, *level));
   }
   for (const BenchCase& c : files) chosen.push_back(&c);
   if (chosen.empty())

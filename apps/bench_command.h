@@ -11,6 +11,7 @@ struct BenchOptions {
   std::vector<std::string> cases;      // empty: all (unless scenario files are named)
   std::vector<std::string> scenarios;  // .toml files benchmarked as the heart cases are
   int threads = 0;                 // 0 = all cores
+  std::string resolution;          // --resolution: the scenarios' blood level; empty: as written (fine)
   bool json = false;
   double seconds = 3.0;            // measuring time per case (after warm-up)
 };

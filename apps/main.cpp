@@ -23,6 +23,11 @@ void addThreadsOption(CLI::App* command, int& threads, const char* help = "Worke
   command->add_option("--threads", threads, help)->check(CLI::Range(1, 1024));
 }
 
+void addResolutionOption(CLI::App* command, std::string& resolution) {
+  command->add_option("--resolution", resolution,
+                      "Blood resolution: coarse, medium, fine (the scenario as written) or finest; the viewer's levels");
+}
+
 void addSetOption(CLI::App* command, std::vector<std::string>& overrides, const char* example = "cycle.beats=2") {
   command->add_option("--set", overrides, std::string("Override a scenario key: --set ") + example + " (repeatable)")
       ->take_all()
@@ -57,6 +62,7 @@ void addRunCommand(CLI::App& app, Commands& c) {
   runApp->add_option("scenario", run.scenario, "Built-in scenario name or path to a .toml file");
   runApp->add_option("--duration", c.duration, "Simulated time (s), overrides simulation.duration");
   addThreadsOption(runApp, run.threads);
+  addResolutionOption(runApp, run.resolution);
   runApp->add_option("--out", run.outDir, "Output directory (default: results/<scenario>)");
   runApp->add_flag("--json", run.json, "Print one JSON summary object on stdout");
   runApp->add_flag("--vtk", run.vtk, "Write VTK frames and a .pvd series for ParaView");
@@ -102,6 +108,7 @@ void addRenderCommand(CLI::App& app, Commands& c) {
   renderApp->add_option("--pressure-max", render.pressureMax,
                         "Blood pressure (mmHg) at the top of the pressure colour scale (0: from the scenario)");
   addThreadsOption(renderApp, render.threads);
+  addResolutionOption(renderApp, render.resolution);
   addSetOption(renderApp, render.overrides);
 }
 
@@ -138,6 +145,7 @@ void addBenchCommand(CLI::App& app, Commands& c) {
       ->expected(1)
       ->take_all();
   addThreadsOption(benchApp, bench.threads);
+  addResolutionOption(benchApp, bench.resolution);
   benchApp->add_option("--seconds", bench.seconds, "Measuring time per case (s)")->check(CLI::Range(0.1, 600.0));
   benchApp->add_flag("--json", bench.json, "Print one JSON object on stdout");
 }

@@ -263,7 +263,7 @@ std::string formatTime(double seconds) {
 }
 
 int renderCommand(const RenderOptions& options) {
-  std::optional<cardiac::Scenario> loaded = loadScenarioOrReport(options.scenario, options.overrides);
+  std::optional<cardiac::Scenario> loaded = loadScenarioOrReport(options.scenario, options.overrides, options.resolution);
   if (!loaded) return kExitBadInput;
   const cardiac::Scenario& scenario = *loaded;
   RenderPlan plan;

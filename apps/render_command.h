@@ -12,6 +12,7 @@ namespace hs::app {
 struct RenderOptions {
   std::string scenario = "heart-only";
   std::vector<std::string> overrides;  // --set KEY=VALUE
+  std::string resolution;              // --resolution: the blood's level; empty: as written (fine)
   std::string times;                   // "0,0.08,1": seconds; empty: 0 and the duration
   std::string views = "front,left,right,top";
   std::string outDir;                  // empty: results/<scenario name>/render

@@ -32,7 +32,8 @@ double secondsSince(Clock::time_point start) {
 
 // The scenario with --duration applied; nullopt after printing the error.
 std::optional<cardiac::Scenario> runScenario(const RunOptions& options) {
-  std::optional<cardiac::Scenario> scenario = loadScenarioOrReport(options.scenario, options.overrides);
+  std::optional<cardiac::Scenario> scenario =
+      loadScenarioOrReport(options.scenario, options.overrides, options.resolution);
   if (!scenario || !options.duration) return scenario;
   if (!std::isfinite(*options.duration) || *options.duration < 0) {
     std::cerr << "heartsim: error: --duration: must be a finite number >= 0 (s), got " << *options.duration << '\n';
@@ -175,6 +176,10 @@ int report(const cardiac::Scenario& scenario, const io::RunTiming& timing, const
 int runCommand(const RunOptions& options) {
   const auto setupStart = Clock::now();
   std::optional<ResumedRun> resumed;
+  if (!options.resume.empty() && !options.resolution.empty()) {
+    std::cerr << "heartsim: error: --resolution: a resumed run goes on with the checkpoint's blood; leave it out\n";
+    return kExitBadInput;
+  }
   if (!options.resume.empty() && !(resumed = readResumedRun(options))) return kExitBadInput;
   const std::optional<cardiac::Scenario> scenario = resumed ? resumed->scenario : runScenario(options);
   if (!scenario) return kExitBadInput;

@@ -10,6 +10,7 @@ namespace hs::app {
 struct RunOptions {
   std::string scenario = "heart-only";
   std::vector<std::string> overrides;  // --set KEY=VALUE
+  std::string resolution;              // --resolution: the blood's level; empty: as written (fine)
   std::optional<double> duration;      // --duration S
   int threads = 0;                     // 0 = all cores
   std::string outDir;                  // empty: results/<scenario name>

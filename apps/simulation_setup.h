@@ -9,18 +9,35 @@
 
 #include <vector>
 
+#include "cardiac/blood_resolution.h"
 #include "cardiac/heart_simulation.h"
 #include "exit_codes.h"
 #include "io/scenario/scenario_file.h"
 
 namespace hs::app {
 
-// The scenario (a built-in name or a .toml path, with --set overrides), or nullopt after
-// printing the scenario reader's one-line error (the caller exits with kExitBadInput).
+// --resolution's level, or nullopt after printing why the word is not one; "" is the
+// scenario as written (fine).
+inline std::optional<cardiac::BloodResolution> resolutionOrReport(const std::string& word) {
+  if (word.empty()) return cardiac::kScenarioResolution;
+  if (const auto level = cardiac::parseResolution(word)) return level;
+  std::cerr << "heartsim: error: --resolution: '" << word
+            << "' is not a blood resolution; expected coarse, medium, fine (the scenario as written) or finest\n";
+  return std::nullopt;
+}
+
+// The scenario (a built-in name or a .toml path, with --set overrides, its blood at
+// --resolution), or nullopt after printing the one-line error (the caller exits with
+// kExitBadInput).
 inline std::optional<cardiac::Scenario> loadScenarioOrReport(const std::string& nameOrPath,
-                                                             const std::vector<std::string>& overrides) {
+                                                             const std::vector<std::string>& overrides,
+                                                             const std::string& resolution = "") {
+  const std::optional<cardiac::BloodResolution> level = resolutionOrReport(resolution);
+  if (!level) return std::nullopt;
   try {
-    return io::loadScenario(nameOrPath, overrides);
+    cardiac::Scenario scenario = io::loadScenario(nameOrPath, overrides);
+    cardiac::applyResolution(*level, scenario);
+    return scenario;
   } catch (const io::ScenarioError& e) {
     std::cerr << "heartsim: error: " << e.what() << '\n';
     return std::nullopt;

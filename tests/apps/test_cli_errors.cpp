@@ -29,6 +29,16 @@ TEST(CliErrors, MissingScenarioFile) {
   expectBadInput(runHeartsim("run no-such-lesson.toml --json", dir), {"no-such-lesson.toml"});
 }
 
+// run, render and bench take the viewer's words for the blood's resolution, and only those.
+TEST(CliErrors, AResolutionThatIsNotALevelIsNamed) {
+  const auto dir = scratchDir("resolution");
+  for (const char* command : {"run heart-only --json", "render heart-only", "bench --case normal --json"})
+    expectBadInput(runHeartsim(std::string(command) + " --resolution huge", dir),
+                   {"--resolution", "'huge'", "coarse, medium, fine", "finest"});
+  // A resumed run keeps the checkpoint's blood: the switch is refused, not ignored.
+  expectBadInput(runHeartsim("run --resume any.ckpt --resolution coarse", dir), {"--resolution", "checkpoint"});
+}
+
 TEST(CliErrors, MalformedTomlNamesFileAndLine) {
   const auto dir = scratchDir("malformed");
   writeFile(dir / "broken.toml", "[simulation]\ndt = 0.005\nduration = = 2\n");

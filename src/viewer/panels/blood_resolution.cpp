@@ -6,38 +6,6 @@
 
 namespace hs::viewer {
 
-const ResolutionLevel& resolutionLevel(BloodResolution level) {
-  return kResolutionLevels[std::size_t(level)];
-}
-
-const char* resolutionName(BloodResolution level) { return resolutionLevel(level).name; }
-
-std::optional<BloodResolution> parseResolution(const std::string& text) {
-  for (const ResolutionLevel& l : kResolutionLevels)
-    if (text == l.name) return l.level;
-  return std::nullopt;
-}
-
-double resolutionSpacingScale(BloodResolution level) {
-  return std::cbrt(1 / resolutionLevel(level).countFactor);
-}
-
-void applyResolution(BloodResolution level, cardiac::Scenario& scenario) {
-  if (level == kScenarioResolution) return;  // bitwise the scenario as written
-  cardiac::BloodSettings& blood = scenario.blood;
-  const auto scale = cardiac::Real(resolutionSpacingScale(level));
-  blood.spacing *= scale;
-  blood.radius *= scale;
-  blood.supportRadius *= scale;
-  if (blood.particles > 0)
-    blood.particles = std::max(1, int(std::lround(double(blood.particles) * resolutionLevel(level).countFactor)));
-}
-
-int particlesAtLevel(BloodResolution level, BloodResolution running, int runningCount) {
-  const double ratio = resolutionLevel(level).countFactor / resolutionLevel(running).countFactor;
-  return int(std::lround(double(runningCount) * ratio));
-}
-
 BloodResolution chooseResolution(std::span<const LevelMeasurement> measurements) {
   std::optional<BloodResolution> finestHolding, coarsestMeasured;
   for (const LevelMeasurement& m : measurements) {

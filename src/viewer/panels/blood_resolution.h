@@ -1,50 +1,29 @@
 #pragma once
-// The blood's resolution: a few levels of particle spacing a student (or the viewer, at
-// start-up) chooses between, and the choice of the finest level that holds real time on the
-// machine the viewer runs on. Each level scales the scenario's own blood: the spacing by s, the
-// particle radius and the kernel's support radius alike (normal: radius = spacing / 2, support =
-// 2 x spacing, at every level), and the particle count by 1 / s^3, so the same volume is filled:
-// the heart stays full and the same share waits in the body. The physics keys (density,
-// viscosity, XSPH, iterations, dt) stay as the scenario says. Plain data and text, unit-tested
+// The viewer's side of the blood's resolution (the levels: cardiac/blood_resolution.h): the
+// choice, at start-up, of the finest level that holds real time on the machine the viewer runs
+// on, and the panel's line about it. Plain data and text, unit-tested
 // (tests/viewer/panels/test_blood_resolution.cpp); resolution_probe.h measures the levels.
-#include <array>
 #include <optional>
 #include <span>
 #include <string>
 
+#include "cardiac/blood_resolution.h"
 #include "cardiac/scenario.h"
 
 namespace hs::viewer {
 
-// Coarsest first. Fine is the scenario as written.
-enum class BloodResolution { Coarse, Medium, Fine, Finest };
-inline constexpr int kResolutionCount = 4;
-inline constexpr BloodResolution kScenarioResolution = BloodResolution::Fine;
-
-struct ResolutionLevel {
-  BloodResolution level;
-  const char* name;
-  double countFactor;  // particles relative to the scenario's; the spacing scales by its cube root's inverse
-};
-inline constexpr std::array<ResolutionLevel, kResolutionCount> kResolutionLevels = {{
-    {BloodResolution::Coarse, "coarse", 0.25},
-    {BloodResolution::Medium, "medium", 0.5},
-    {BloodResolution::Fine, "fine", 1.0},
-    {BloodResolution::Finest, "finest", 2.0},
-}};
-
-const ResolutionLevel& resolutionLevel(BloodResolution level);
-const char* resolutionName(BloodResolution level);
-// "coarse", "medium", "fine" or "finest"; nullopt for anything else.
-std::optional<BloodResolution> parseResolution(const std::string& text);
-// The factor of the spacing (and radius and support radius): countFactor^(-1/3).
-double resolutionSpacingScale(BloodResolution level);
-
-// The scenario's blood at `level`: spacing, radius and support radius scaled alike, the count
-// by countFactor (a count of 0, "fill the start region", stays 0: the fill follows the spacing).
-void applyResolution(BloodResolution level, cardiac::Scenario& scenario);
-// The count `level` gives, from the count of the run at `running` (what a count of 0 came to).
-int particlesAtLevel(BloodResolution level, BloodResolution running, int runningCount);
+// The levels themselves (cardiac/blood_resolution.h), as every command names them.
+using cardiac::applyResolution;
+using cardiac::BloodResolution;
+using cardiac::kResolutionCount;
+using cardiac::kResolutionLevels;
+using cardiac::kScenarioResolution;
+using cardiac::parseResolution;
+using cardiac::particlesAtLevel;
+using cardiac::resolutionLevel;
+using cardiac::ResolutionLevel;
+using cardiac::resolutionName;
+using cardiac::resolutionSpacingScale;
 
 // One level's measurement at start-up: its steps' pace, simulated seconds per wall second of
 // stepping (while the window draws). Unmeasured: coarser levels were too slow, or it could not
