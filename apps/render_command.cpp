@@ -69,7 +69,8 @@ std::vector<double> parseTimes(const std::string& list, double duration) {
     if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(t))
       throw BadInput{"--times: '" + text + "' is not a time in seconds (give a comma list such as 0,0.08,1)"};
     if (t < 0) throw BadInput{"--times: " + text + " s is negative; times count seconds from the start (>= 0)"};
-    if (t > duration * (1 + 1e-9))
+    // The duration is single precision (0.7 is 0.69999999): the end as written is within it.
+    if (t > duration * (1 + 1e-6))
       throw BadInput{"--times: " + text + " s is beyond the scenario's duration of " + formatTime(duration) +
                      " s (lengthen it with --set simulation.duration=...)"};
     if (names.insert(formatTime(t)).second) times.push_back(t);

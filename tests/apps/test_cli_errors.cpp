@@ -51,6 +51,13 @@ TEST(CliErrors, UnknownKeyNamesFileAndKey) {
   expectBadInput(runHeartsim("run typo.toml --json", dir), {"typo.toml", "cycle.beat"});
 }
 
+// A quoted string with no closing quote is an error, not a name with a quote in it.
+TEST(CliErrors, AnUnterminatedStringInSetIsNamed) {
+  const auto dir = scratchDir("unterminated");
+  expectBadInput(runHeartsim("run heart-only --set scenario.name=\\\"abc --json", dir),
+                 {"--set", "scenario.name", "closing quote"});
+}
+
 TEST(CliErrors, NegativeDtFromFileAndFromSet) {
   const auto dir = scratchDir("negative");
   writeFile(dir / "neg.toml", "[simulation]\ndt = -0.005\n");

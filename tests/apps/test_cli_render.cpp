@@ -86,6 +86,16 @@ TEST_F(CliRender, HeartOnlyWritesEveryViewAndTheContactSheetWithoutADisplay) {
   EXPECT_GT(sheet.height(), 2 * 240);  // two rows
 }
 
+// The default times are 0 and the end; a duration single precision holds a little short (0.03 s is 0.029999999)
+// still has its end drawn, and the blood at --resolution coarse is drawn too.
+TEST_F(CliRender, TheDefaultTimesHoldForAnyDurationAndAResolution) {
+  const auto dir = scratchDir("render_duration");
+  const CliResult r = renderNoDisplay(
+      "fluid-at-rest --set simulation.duration=0.03 --views front --out D --size 160x120 --resolution coarse", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  expectImages(dir / "D", {"t0_front.png", "t0.03_front.png"}, bloodBlue, 160, 120);
+}
+
 TEST_F(CliRender, FluidAtRestShowsTheBlood) {
   const auto dir = scratchDir("render_fluid");
   const CliResult r = renderNoDisplay("fluid-at-rest --times 0,0.01 --views front,left --out D --size 320x240", dir);

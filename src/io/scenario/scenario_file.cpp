@@ -165,6 +165,11 @@ void applyOverride(ParseState& st, const std::string& text) {
     node = nullptr;
   }
   if (spec) {
+    // A bare word is a string (--set scenario.name=mine); a quoted one must be TOML's whole.
+    const bool quoted = !value.empty() && (value.front() == '"' || value.front() == '\'');
+    if (spec->stringLike && quoted && !node)
+      fail(origin.source + ": " + key + ": the string " + value +
+           " has no closing quote; expected it quoted whole or not at all");
     if (spec->stringLike && (!node || !node->is_string())) {
       applyLeaf(st, key, toml::value<std::string>(value), 0, origin);
       return;
