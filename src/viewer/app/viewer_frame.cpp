@@ -167,7 +167,7 @@ void ViewerApp::drawFrame(const std::string& captureTo) {
   drawSceneLabels(m_labels, m_camera->camera(), w, h, area);
   postMessage();
   drawToasts(m_toasts.visible(glfwGetTime()), area);
-  drawHelpWindow(m_controls.showHelp, w, h);
+  drawHelpWindow(m_controls.showHelp, m_controls.helpPage, w, h);
   if (m_status.hasHeart) drawBrushOutline(m_controls.region);
   if (m_lesson)
     drawLessonPanel(*m_lesson, m_lessonRequests, kPanelWidth, 0, lessonWidth(w), float(h) - stripHeight(h));

@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <span>
 
 #include "viewer/panels/ui_panel.h"
@@ -122,27 +123,38 @@ void rowsTable(const char* id, std::span<const Row> rows, const char* thirdColum
 
 }  // namespace
 
-void drawHelpWindow(bool& open, int windowWidth, int windowHeight) {
+void drawHelpWindow(bool& open, int& page, int windowWidth, int windowHeight) {
   if (!open) return;
   const float width = 640, height = std::min(560.0f, float(windowHeight) - 40);
   ImGui::SetNextWindowPos(ImVec2(float(windowWidth) / 2 + kPanelWidth / 2, float(windowHeight) / 2),
                           ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
   ImGui::Begin("Help", &open, ImGuiWindowFlags_NoSavedSettings);
-  if (ImGui::BeginTabBar("help tabs")) {
-    if (ImGui::BeginTabItem("The numbers")) {
+  // The pages as a row of buttons, the one shown marked. Not ImGui's tab bar: Debian's ImGui
+  // (1.86) lets a tab take a click only if the pointer was on it or on nothing the frame before,
+  // so a tap or a quick click after the pointer jumped from another tab chose nothing while the
+  // tab lit up (tests/viewer/panels/test_help_window.cpp).
+  constexpr std::array<const char*, kHelpPageCount> kPages = {"The numbers", "Colours", "Controls", "Mouse and keys"};
+  page = std::clamp(page, 0, kHelpPageCount - 1);
+  for (int i = 0; i < kHelpPageCount; ++i) {
+    if (i > 0) ImGui::SameLine();
+    const bool shown = page == i;
+    if (shown) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_TabActive));
+    if (ImGui::Button(kPages[std::size_t(i)])) page = i;
+    if (shown) ImGui::PopStyleColor();
+  }
+  ImGui::Separator();
+  switch (page) {
+    case 0:
       rowsTable("numbers", kNumbers, "normal (adult, rest)");
-      ImGui::EndTabItem();
-    }
-    if (ImGui::BeginTabItem("Colours")) {
+      break;
+    case 1:
       rowsTable("colours", kColours, "");
-      ImGui::EndTabItem();
-    }
-    if (ImGui::BeginTabItem("Controls")) {
+      break;
+    case 2:
       rowsTable("controls", kControls, "then");
-      ImGui::EndTabItem();
-    }
-    if (ImGui::BeginTabItem("Mouse and keys")) {
+      break;
+    default:
       if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
         for (const auto& row : kKeys) {
           ImGui::TableNextRow();
@@ -153,9 +165,6 @@ void drawHelpWindow(bool& open, int windowWidth, int windowHeight) {
         }
         ImGui::EndTable();
       }
-      ImGui::EndTabItem();
-    }
-    ImGui::EndTabBar();
   }
   ImGui::End();
 }

@@ -5,6 +5,9 @@
 
 namespace hs::viewer {
 
-void drawHelpWindow(bool& open, int windowWidth, int windowHeight);
+// Its pages: the numbers, the colours, the controls, the mouse and keys.
+inline constexpr int kHelpPageCount = 4;
+// `page` (0 to kHelpPageCount - 1) is the page shown; the page buttons change it.
+void drawHelpWindow(bool& open, int& page, int windowWidth, int windowHeight);
 
 }  // namespace hs::viewer

@@ -38,6 +38,7 @@ struct ViewerControls {
   int bloodLook = 0;    // render::BloodLook: liquid, spheres
   int flowView = 0;     // render::FlowView: off, streaks, arrows
   bool showHelp = false;
+  int helpPage = 0;  // the Help window's page (help_window.h)
   bool showLabels = true;  // the anatomy's names and the flow's arrows on the scene (N)
   PanelSection openSection = PanelSection::Region;
   RegionControls region;  // the beating region: bull's-eye, brush, Apply
