@@ -33,7 +33,7 @@ std::string withThousands(long value) {
   return text;
 }
 
-std::string resolutionLine(const ResolutionStatus& status, double livePace, bool behind) {
+std::string resolutionLine(const ResolutionStatus& status, double livePace, bool behind, bool paused) {
   if (status.measuring) return "measuring this computer's pace: " + status.measuringWhat;
   // A fixed count runs as given (the scenario's own level) until the student picks another.
   const bool fixed = !status.fixedBy.empty() && status.level == kScenarioResolution;
@@ -41,6 +41,8 @@ std::string resolutionLine(const ResolutionStatus& status, double livePace, bool
   if (!fixed) line += std::string(resolutionName(status.level)) + ", ";
   line += withThousands(status.particles) + " particles";
   if (fixed) line += " (" + status.fixedBy + ")";
+  // Paused, nothing keeps pace or falls behind: the line says only that.
+  if (paused) return line + ", paused";
   char pace[64];
   // Slow motion as the pace meter sees it now (a finer level picked, a busier machine) comes
   // before what the start-up measurement promised.

@@ -62,7 +62,8 @@ struct ResolutionStatus {
 // One line: "blood: medium, 2,100 particles, holds real time (1.3x)"; behind: "..., 0.45x
 // real time: slow motion"; while measuring: "measuring this computer's pace: medium (2 of 4)".
 // livePace / behind: the simulation thread's pace now and whether it falls short of 1x.
-std::string resolutionLine(const ResolutionStatus& status, double livePace, bool behind);
+// paused: "blood: medium, 2,100 particles, paused" (no pace while nothing runs).
+std::string resolutionLine(const ResolutionStatus& status, double livePace, bool behind, bool paused = false);
 
 // 4200 -> "4,200".
 std::string withThousands(long value);

@@ -89,7 +89,7 @@ void simulationSection(ViewerControls& c, const ViewerStatus& s) {
   }
   if (s.hasBlood) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("%s", resolutionLine(s.resolution, s.realTimeFactor, s.behind).c_str());
+    ImGui::TextWrapped("%s", resolutionLine(s.resolution, s.realTimeFactor, s.behind, !c.playing).c_str());
     ImGui::PopStyleColor();
     tooltip("The blood's resolution (Blood section): at start-up the viewer measures each level on this "
             "computer and picks the finest that keeps up with real time; a finer one runs in slow motion.");

@@ -123,6 +123,8 @@ TEST(BloodResolution, ThePanelLineSaysTheLevelCountAndPace) {
   s.particles = 2100;
   s.measuredPace = 1.3;
   EXPECT_EQ(resolutionLine(s, 1.0, false), "blood: medium, 2,100 particles, holds real time (1.3x)");
+  // Paused: no pace claimed, measured or not.
+  EXPECT_EQ(resolutionLine(s, 0.0, false, true), "blood: medium, 2,100 particles, paused");
   // Picked finer than the machine holds: the pace meter's slow motion.
   s.level = R::Finest;
   s.particles = 8400;
