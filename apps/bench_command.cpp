@@ -296,7 +296,7 @@ std::vector<std::string> benchCaseNames() {
 }
 
 int benchCommand(const BenchOptions& options) {
-  const std::optional<cardiac::BloodResolution> level = resolutionOrReport(options.resolution);
+  const std::optional<cardiac::BloodResolution> level = levelOrReport(options.resolution);
   if (!level) return kExitBadInput;
   const std::vector<BenchCase> cases = allCases(*level);
   std::vector<const BenchCase*> chosen;

@@ -16,14 +16,19 @@
 
 namespace hs::app {
 
-// --resolution's level, or nullopt after printing why the word is not one; "" is the
-// scenario as written (fine).
-inline std::optional<cardiac::BloodResolution> resolutionOrReport(const std::string& word) {
-  if (word.empty()) return cardiac::kScenarioResolution;
+// The level --resolution names, or nullopt after printing why the word is not one. `orAlso`: a
+// word the command takes besides the levels (the viewer's "auto"), named in the error.
+inline std::optional<cardiac::BloodResolution> resolutionOrReport(const std::string& word,
+                                                                  const char* orAlso = nullptr) {
   if (const auto level = cardiac::parseResolution(word)) return level;
-  std::cerr << "heartsim: error: --resolution: '" << word
-            << "' is not a blood resolution; expected coarse, medium, fine (the scenario as written) or finest\n";
+  std::cerr << "heartsim: error: --resolution: '" << word << "' is not a blood resolution; expected coarse, medium, "
+            << (orAlso ? std::string("fine, finest or ") + orAlso : std::string("fine or finest")) << '\n';
   return std::nullopt;
+}
+
+// --resolution as the headless commands take it: unset is the scenario as written (fine).
+inline std::optional<cardiac::BloodResolution> levelOrReport(const std::string& word) {
+  return word.empty() ? std::optional(cardiac::kScenarioResolution) : resolutionOrReport(word);
 }
 
 // The scenario (a built-in name or a .toml path, with --set overrides, its blood at
@@ -32,7 +37,7 @@ inline std::optional<cardiac::BloodResolution> resolutionOrReport(const std::str
 inline std::optional<cardiac::Scenario> loadScenarioOrReport(const std::string& nameOrPath,
                                                              const std::vector<std::string>& overrides,
                                                              const std::string& resolution = "") {
-  const std::optional<cardiac::BloodResolution> level = resolutionOrReport(resolution);
+  const std::optional<cardiac::BloodResolution> level = levelOrReport(resolution);
   if (!level) return std::nullopt;
   try {
     cardiac::Scenario scenario = io::loadScenario(nameOrPath, overrides);

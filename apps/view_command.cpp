@@ -56,12 +56,8 @@ int viewCommand(const ViewOptions& options) {
     return kExitBadInput;
   }
   if (options.resolution != "auto") {
-    viewer.resolution = viewer::parseResolution(options.resolution);
-    if (!viewer.resolution) {
-      std::cerr << "heartsim: error: --resolution: '" << options.resolution
-                << "' is not a blood resolution; expected coarse, medium, fine, finest or auto\n";
-      return kExitBadInput;
-    }
+    viewer.resolution = resolutionOrReport(options.resolution, "auto");
+    if (!viewer.resolution) return kExitBadInput;
   }
   const std::optional<render::BloodLook> look = render::parseBloodLook(options.bloodLook);
   if (!look) {

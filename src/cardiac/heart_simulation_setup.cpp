@@ -312,13 +312,4 @@ void HeartSimulation::recordBloodOrigins() {
                               : FlowRegion::Parked;
 }
 
-// Blood particles drift away from their memory neighbours as they flow; sorting them along a
-// Z-order curve of the grid cells now and then keeps the fluid solver's gathers from the
-// particle arrays cache-friendly (its own solve already runs in cell order). Every column
-// moves, the ids with them.
-void HeartSimulation::reorderBlood() {
-  const std::vector<pbd::Vec3> x(m_particles.position.begin() + m_firstBloodParticle, m_particles.position.end());
-  pbd::permuteRange(m_particles, m_firstBloodParticle, pbd::mortonOrder(x, m_scenario.blood.supportRadius));
-}
-
 }  // namespace hs::cardiac
