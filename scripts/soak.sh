@@ -85,7 +85,7 @@ for s in "${scenarios[@]}"; do
   awk -F, -v name="$s" -v code="$code" -v wall="$wall" -v span="$seconds" -v dihedral="${dihedral:0:6}" '
     NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
     {
-      t = $col["time_s"]; v = $col["cavity_volume_ml"]; phase = $col["phase"]
+      t = $col["time_s"]; v = $col["cavity_volume_ml"]; phase = $col["wall_phase"]
       if ($col["inverted_tets"] > inverted) inverted = $col["inverted_tets"]
       if ($col["volume_error_max"] > volErr) volErr = $col["volume_error_max"]
       # Without blood (heart-only) there are no blood columns.

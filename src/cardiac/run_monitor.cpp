@@ -153,6 +153,7 @@ const Verdict& RunMonitor::observe() {
   }
   if (!check(sample.tissue, sample.cavity)) return m_verdict;
   gather(sample);
+  sample.heartPhase = heartPhaseAfter(m_last.heartPhase, phaseSignals(sample));
   ++m_observed;
   m_extremes.add(sample, m_sim.hasHeart() && m_settings.pump);
   if (m_sim.hasHeart() && m_settings.beatList) m_beats.record(sample.startTime, sample.phase, sample.cavity, sample.flows);
@@ -246,13 +247,43 @@ void Verdict::save(pbd::StateWriter& w) const { w.fields(issue.check, issue.what
 
 void Verdict::load(pbd::StateReader& r) { r.fields(issue.check, issue.what, step, time); }
 
+PhaseSignals phaseSignals(const StepSample& s) {
+  PhaseSignals signals;
+  if (s.lumped) {
+    signals.valves = true;
+    signals.mitralOpen = s.lumped->mitralOpen;
+    signals.aorticOpen = s.lumped->aorticOpen;
+    signals.contracting = s.lumped->ventricularActivation > 0;
+  } else if (s.circulation) {
+    signals.valves = true;
+    signals.mitralOpen = s.flowStep.valves.mitralOpen;
+    signals.aorticOpen = s.flowStep.valves.aorticOpen;
+    signals.contracting = s.phase == Phase::Systole;
+  }
+  return signals;
+}
+
+std::string heartPhaseLabel(const StepSample& s) {
+  PhaseDetail detail;
+  detail.wallContracting = s.phase == Phase::Systole;
+  if (s.lumped) {
+    detail.atrialKick = s.lumped->atrialActivation > 0;
+    detail.mitralLeak = s.lumped->mitralFlow < 0;
+    detail.aorticLeak = s.lumped->aorticFlow < 0;
+  } else {
+    detail.mitralLeak = s.flows.mitralBackward > 0;
+    detail.aorticLeak = s.flows.aorticBackward > 0;
+  }
+  return heartPhaseLabel(s.heartPhase, detail);
+}
+
 void StepSample::save(pbd::StateWriter& w) const {
-  w.fields(step, startTime, time, phase, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
+  w.fields(step, startTime, time, phase, heartPhase, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
            contraction, baseDescent, vesselFill, surfaceTurn, bloodPush);
 }
 
 void StepSample::load(pbd::StateReader& r) {
-  r.fields(step, startTime, time, phase, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
+  r.fields(step, startTime, time, phase, heartPhase, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
            contraction, baseDescent, vesselFill, surfaceTurn, bloodPush);
 }
 

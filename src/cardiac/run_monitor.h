@@ -17,6 +17,7 @@
 #include "cardiac/circulation.h"
 #include "cardiac/circulation/beat_metrics.h"
 #include "cardiac/circulation/circulation_recorder.h"
+#include "cardiac/circulation/heart_phase.h"
 #include "cardiac/heart_simulation.h"
 #include "mesh/surface_hinges.h"
 
@@ -59,12 +60,22 @@ HealthIssue checkTissue(const TissueStats& tissue, bool cavityFinite, const LvMo
                         std::span<const Vec3> positions);
 HealthIssue checkBlood(const BloodStats& blood, const HealthLimits& limits);
 
+struct StepSample;
+// What a step's heart phase is read from: the lumped circulation's valves and the ventricle's
+// activation; without it the 3D valves and the wall's own clock; nothing without valves.
+PhaseSignals phaseSignals(const StepSample& sample);
+// The step's phase as every front end names it (heart_phase.h), with the atrial kick and leaks
+// from the lumped circulation's flows (or the 3D blood's, without it).
+std::string heartPhaseLabel(const StepSample& sample);
+
 // One step's figures. `cavity`, `flows` and `flowStep` with a heart (flows with blood too);
 // `restDeviation` and `blood` only when the monitor gathers every column (MonitorSettings).
 struct StepSample {
   std::int64_t step = 0;
   double startTime = 0, time = 0;  // s, at the step's start and end
-  Phase phase = Phase::Rest;       // during the step
+  Phase phase = Phase::Rest;       // the wall's own clock during the step
+  // The heart's phase from the valves (heart_phase.h; None without valves or figures gathered).
+  HeartPhase heartPhase = HeartPhase::None;
   double cavity = 0;               // m^3, at the end
   TissueStats tissue;
   Real restDeviation = 0;

@@ -104,7 +104,7 @@ TEST_F(BadCheckpoint, ForeignFileHasBadMagic) { expectOneLine(resume("{\"not\": 
 TEST_F(BadCheckpoint, OtherVersionIsNamed) {
   std::string bytes = s_good;
   bytes[8] = 9;
-  expectOneLine(resume(bytes), "format version 9; this heartsim reads version 3");
+  expectOneLine(resume(bytes), "format version 9; this heartsim reads version 4");
 }
 
 TEST_F(BadCheckpoint, TruncatedFileSaysAtWhichByte) {

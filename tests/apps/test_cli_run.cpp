@@ -113,7 +113,7 @@ TEST(CliRun, WritesMetricsCsvAndVtkSeries) {
   const CliResult r = runHeartsim("run heart-only --duration 0.1 --vtk --set output.vtk_every=5 --out out", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const std::string csv = readFile(dir / "out" / "metrics.csv");
-  EXPECT_EQ(csv.rfind("step,time_s,phase,cavity_volume_m3", 0), 0u);
+  EXPECT_EQ(csv.rfind("step,time_s,phase,wall_phase,cavity_volume_m3", 0), 0u);
   int rows = 0;
   for (char c : csv) rows += c == '\n';
   EXPECT_EQ(rows, 21);  // header + 20 steps

@@ -32,7 +32,7 @@ struct CheckpointError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-inline constexpr std::uint32_t kCheckpointVersion = 3;  // 3: the blood's push on the wall in the run monitor
+inline constexpr std::uint32_t kCheckpointVersion = 4;  // 3: the blood's push on the wall in the run monitor; 4: the heart's phase
 
 struct Checkpoint {
   std::string scenarioToml;

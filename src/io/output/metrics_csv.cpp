@@ -35,7 +35,9 @@ void writeLumpedRow(std::ostream& csv, const cardiac::StepSample& sample) {
 }  // namespace
 
 void writeMetricsHeader(std::ostream& csv, const MetricsColumns& columns) {
-  csv << "step,time_s,phase";
+  // phase: the heart's, from the valves (cardiac/circulation/heart_phase.h); wall_phase: the
+  // wall's own clock (systole, diastole, rest), which says when a beat starts.
+  csv << "step,time_s,phase,wall_phase";
   if (columns.heart)
     csv << ",cavity_volume_m3,cavity_volume_ml,volume_error_mean,volume_error_max,inverted_tets,rest_deviation_rel";
   if (columns.blood)
@@ -52,7 +54,8 @@ void writeMetricsHeader(std::ostream& csv, const MetricsColumns& columns) {
 }
 
 void writeMetricsRow(std::ostream& csv, const MetricsColumns& columns, const cardiac::StepSample& sample) {
-  csv << sample.step << ',' << sample.time << ',' << (columns.heart ? cardiac::phaseName(sample.phase) : "none");
+  csv << sample.step << ',' << sample.time << ',' << (columns.heart ? cardiac::heartPhaseKey(sample.heartPhase) : "none")
+      << ',' << (columns.heart ? cardiac::phaseName(sample.phase) : "none");
   if (columns.heart) {
     const cardiac::TissueStats& t = sample.tissue;
     csv << ',' << sample.cavity << ',' << sample.cavity * kMlPerM3 << ',' << t.volumeErrorMean << ','

@@ -11,6 +11,7 @@
 
 #include "io/output/circulation_plots.h"
 #include "io/output/circulation_plots_internal.h"
+#include "cardiac/circulation/heart_phase.h"
 
 namespace hs::io {
 namespace {
@@ -33,42 +34,23 @@ int eventRowHeight() { return viz::Image::capHeight(kTextScale) + pad(); }
 int tierHeight() { return 2 * viz::Image::lineHeight(kTextScale); }
 int phaseBandHeight(int tiers) { return tiers * tierHeight() + eventRowHeight(); }
 
-// The phase that a valve event begins / ends.
-const char* phaseAfter(ValveEvent::Kind kind) {
-  switch (kind) {
-    case ValveEvent::Kind::MitralCloses:
-      return "isovolumic contraction";
-    case ValveEvent::Kind::AorticOpens:
-      return "ejection";
-    case ValveEvent::Kind::AorticCloses:
-      return "isovolumic relaxation";
-    case ValveEvent::Kind::MitralOpens:
-      return "filling";
-  }
-  return "";
-}
-const char* phaseBefore(ValveEvent::Kind kind) {
-  switch (kind) {
-    case ValveEvent::Kind::MitralCloses:
-      return "filling";
-    case ValveEvent::Kind::AorticOpens:
-      return "isovolumic contraction";
-    case ValveEvent::Kind::AorticCloses:
-      return "ejection";
-    case ValveEvent::Kind::MitralOpens:
-      return "isovolumic relaxation";
-  }
-  return "";
-}
-
-std::vector<WiggersLayout::Phase> namedPhases(const WiggersLayout& layout, double endMs) {
-  const std::vector<ValveEvent>& events = layout.events;
-  if (events.empty()) return {};
-  std::vector<WiggersLayout::Phase> result{
-      {phaseBefore(events.front().kind), 0.0, layout.eventTimesMs.front()}};
-  for (std::size_t i = 0; i < events.size(); ++i) {
-    result.push_back({phaseAfter(events[i].kind), layout.eventTimesMs[i],
-                      i + 1 < events.size() ? layout.eventTimesMs[i + 1] : endMs});
+// The phases as runs of the samples' phases, each read from the valves by the rule every front
+// end uses (cardiac/circulation/heart_phase.h): the band, the pump panel and metrics.csv agree
+// step by step. A beat starts at the ventricle's onset, after filling; sample k covers
+// [timeMs[k-1], timeMs[k]] (the first from 0).
+std::vector<WiggersLayout::Phase> namedPhases(const std::vector<CirculationSample>& beat,
+                                              const std::vector<double>& timeMs) {
+  std::vector<WiggersLayout::Phase> result;
+  cardiac::HeartPhase phase = cardiac::HeartPhase::Filling;
+  for (std::size_t k = 0; k < beat.size(); ++k) {
+    const CirculationSample& s = beat[k];
+    phase = cardiac::heartPhaseAfter(phase, {true, s.mitralOpen, s.aorticOpen, s.ventricularActivation > 0});
+    const double from = k == 0 ? 0.0 : timeMs[k - 1];
+    const std::string name = cardiac::heartPhaseName(phase);
+    if (result.empty() || result.back().name != name)
+      result.push_back({name, from, timeMs[k]});
+    else
+      result.back().toMs = timeMs[k];
   }
   if (result.size() > 2 && result.front().name == result.back().name) {
     const bool frontShorter =
@@ -270,7 +252,7 @@ WiggersLayout wiggersLayout(const std::vector<CirculationSample>& beat, const st
                    panelSpec("LV volume (mL)", std::move(curves[1]), timeMs),
                    panelSpec("Flow (mL/s)", std::move(curves[2]), timeMs)};
   layout.panels.back().xLabel = "Time from the beat's start (ms)";
-  layout.phases = namedPhases(layout, timeMs.back());
+  layout.phases = namedPhases(beat, timeMs);
   // The names' tiers depend on the plot area's columns, the band's height on the tiers used:
   // place them under the tallest band, then shrink it (the left edge only moves right, by at
   // most a few pixels, which the pad between names absorbs).

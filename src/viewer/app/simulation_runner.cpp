@@ -89,7 +89,14 @@ void readStatus(const SimulationState& state, ViewerStatus& status) {
     status.recordedBeat = text;
   }
   status.heartSize = float(scenario.geometry.endoRadius);
-  status.phase = sim.hasHeart() && scenario.cycle.enabled ? cardiac::phaseName(step.phase) : "";
+  // One phase, from the valves (cardiac/circulation/heart_phase.h): its name in the information
+  // box (one line: the box keeps its size), its name with the atrial kick or a leak in the pump panel.
+  const bool beating = sim.hasHeart() && scenario.cycle.enabled;
+  const std::string phase = beating ? cardiac::heartPhaseLabel(step) : "";
+  status.phase = !beating                                         ? ""
+                 : step.heartPhase != cardiac::HeartPhase::None ? cardiac::heartPhaseName(step.heartPhase)
+                 : step.phase == cardiac::Phase::Systole        ? "the wall contracts"
+                                                                 : "the wall relaxes";
   status.cavity = sim.hasHeart() ? step.cavity : -1;
   status.resolution.particles = sim.hasBlood() ? int(sim.particles().size() - sim.firstBloodParticle()) : 0;
   status.resolution.spacing = double(scenario.blood.spacing);
@@ -101,6 +108,8 @@ void readStatus(const SimulationState& state, ViewerStatus& status) {
   pump.beats = state.pump ? state.pump->readings() : BeatReadings{};
   pump.cycleOn = scenario.cycle.enabled;
   pump.phase = step.phase;
+  pump.heartPhase = step.heartPhase;
+  pump.phaseLabel = phase;
   pump.thesisTiming = scenario.cycle.mode == cardiac::TimingMode::Thesis;
   pump.valves = step.circulation ? step.flowStep.valves : cardiac::ValveStates{};
   pump.valveMode = scenario.circulation.valveMode;

@@ -25,19 +25,28 @@ std::string normal(const PumpStatus& s, const char* adult) {
                         : std::string("\nNormal adult at rest: ") + adult + ".";
 }
 
+// The phase's colour: red while the ventricle ejects, blue while it fills, grey when shut.
+ImVec4 phaseColour(cardiac::HeartPhase phase, cardiac::Phase wall) {
+  using cardiac::HeartPhase;
+  if (phase == HeartPhase::Ejection || (phase == HeartPhase::None && wall == cardiac::Phase::Systole))
+    return ImVec4(0.75f, 0.15f, 0.15f, 1);
+  if (phase == HeartPhase::Filling || phase == HeartPhase::None) return ImVec4(0.15f, 0.35f, 0.75f, 1);
+  return ImVec4(0.4f, 0.3f, 0.45f, 1);
+}
+
 void phaseAndValves(const PumpStatus& s) {
   if (!s.cycleOn) {
     ImGui::TextColored(kMuted, "phase: rest (the cardiac cycle is off)");
-  } else if (s.phase == cardiac::Phase::Systole) {
-    ImGui::TextColored(ImVec4(0.75f, 0.15f, 0.15f, 1), "phase: systole (contracting, ejecting)");
-  } else if (s.phase == cardiac::Phase::Diastole) {
-    ImGui::TextColored(ImVec4(0.15f, 0.35f, 0.75f, 1), "phase: diastole (relaxing, filling)");
-  } else {
+  } else if (s.phase == cardiac::Phase::Rest) {
     ImGui::TextColored(kMuted, "phase: rest (the wall does not beat)");
+  } else {
+    ImGui::PushStyleColor(ImGuiCol_Text, phaseColour(s.heartPhase, s.phase));
+    ImGui::TextWrapped("phase: %s", s.phaseLabel.c_str());
+    ImGui::PopStyleColor();
   }
-  tooltip(
-      "Systole: the wall contracts and pushes blood out through the aortic valve.\n"
-      "Diastole: the wall relaxes and the ventricle fills through the mitral valve.");
+  tooltip(std::string(cardiac::heartPhaseExplanation(s.heartPhase)) +
+          "\nThe phase is read from the valves, as the Wiggers diagram's bands are. The wall's own clock "
+          "(systole: the muscle contracts, diastole: it relaxes) is metrics.csv's wall_phase column.");
   if (!s.hasBlood) return;
   const char* mode = s.valveMode == cardiac::ValveMode::Timing     ? "they follow the phase (timing)"
                      : s.valveMode == cardiac::ValveMode::Pressure ? "each opens when the pressure before it "

@@ -6,7 +6,10 @@
 // the valves and the pressures on fixed axes (plot_axes.h), the run before in grey. Like the left panel (ui_panel.h) it
 // only reads a status and writes its controls; the app fills the status from the simulation
 // thread. Needs an ImGui frame in progress.
+#include <string>
+
 #include "cardiac/circulation.h"
+#include "cardiac/circulation/heart_phase.h"
 #include "viewer/plots/plot_axes.h"
 #include "viewer/plots/plot_history.h"
 #include "viewer/plots/pump_readout.h"
@@ -19,7 +22,9 @@ struct PumpStatus {
   VolumeScale scale;
   BeatReadings beats;
   bool cycleOn = false;
-  cardiac::Phase phase = cardiac::Phase::Rest;
+  cardiac::Phase phase = cardiac::Phase::Rest;  // the wall's own clock
+  cardiac::HeartPhase heartPhase = cardiac::HeartPhase::None;  // from the valves (heart_phase.h)
+  std::string phaseLabel;  // cardiac::heartPhaseLabel: the same line as the information box's
   bool thesisTiming = false;  // the cycle counts steps (thesis Algorithms 2-3), not a heart rate
   cardiac::ValveStates valves;
   cardiac::ValveMode valveMode = cardiac::ValveMode::Timing;

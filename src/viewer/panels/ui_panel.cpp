@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 
@@ -310,13 +311,19 @@ void drawStatusOverlay(const ViewerStatus& status, float rightEdge, float bottom
   constexpr float kMargin = 10;
   ImGui::SetNextWindowPos(ImVec2(rightEdge - kMargin, bottomEdge - kMargin), ImGuiCond_Always, ImVec2(1, 1));
   ImGui::SetNextWindowBgAlpha(0.75f);
+  // Wide enough from the first frame for the longest phase's name: an automatic size follows its
+  // content a frame late, and the box grows leftward from the corner, so a phase that just got
+  // longer would be cut at the right edge for that frame.
+  const float phaseWidth = ImGui::CalcTextSize("phase: isovolumic contraction").x;
+  ImGui::SetNextWindowSizeConstraints(ImVec2(phaseWidth + 2 * ImGui::GetStyle().WindowPadding.x, 0),
+                                      ImVec2(FLT_MAX, FLT_MAX));
   ImGui::Begin("status", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                    ImGuiWindowFlags_NoNav);
   ImGui::Text("%s", status.scenarioName.c_str());
   ImGui::Text("t = %.3f s", status.time);
-  if (*status.phase) ImGui::Text("phase: %s", status.phase);
+  if (!status.phase.empty()) ImGui::Text("phase: %s", status.phase.c_str());
   // The thesis-scale models are metres across: their volumes read better in m^3 (pump_readout.h).
   if (status.cavity >= 0 && status.pump.scale.thesis)
     ImGui::Text("cavity volume: %.3g m^3 (thesis scale)", status.cavity);
@@ -329,8 +336,12 @@ void drawStatusOverlay(const ViewerStatus& status, float rightEdge, float bottom
     ImGui::TextWrapped("%s", status.liquidNote.c_str());
     ImGui::PopTextWrapPos();
   }
+  // Always a line, so that the box keeps its height while the pace comes and goes (it grows
+  // upward a frame late: a line that appears would be cut at the bottom for that frame).
   if (status.behind)
     ImGui::TextColored(ImVec4(0.85f, 0.45f, 0.05f, 1), "slow motion: %.2gx real time", status.realTimeFactor);
+  else
+    ImGui::TextDisabled("pace: as asked");
   ImGui::End();
 }
 

@@ -62,7 +62,7 @@ struct ViewerStatus {
   std::string scenarioName;
   double time = 0;            // s, simulated
   double dt = 0;              // s per step
-  const char* phase = "";     // "systole", "diastole", "rest" or "" (no beating heart)
+  std::string phase;  // the heart's phase's name (cardiac::heartPhaseName), "" without a beating heart
   double cavity = -1;         // m^3; < 0: no heart
   double frameMs = 0;         // wall time per frame, smoothed
   double realTimeFactor = 1;  // simulated / wall seconds achieved, smoothed

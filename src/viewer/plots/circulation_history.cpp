@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "cardiac/circulation/clinical_units.h"
+#include "cardiac/circulation/heart_phase.h"
 
 namespace hs::viewer {
 namespace {
@@ -119,16 +120,17 @@ MitralWaves mitralWaves(std::span<const CirculationSample> beat) {
 }
 
 std::vector<CyclePhase> cyclePhases(const ValveEvents& e, double beatEnd) {
+  using cardiac::HeartPhase;
   std::vector<CyclePhase> phases;
+  auto add = [&](CyclePhaseKind kind, HeartPhase phase, double from, double to) {
+    phases.push_back({kind, cardiac::heartPhaseName(phase), cardiac::heartPhaseShortName(phase), from, to});
+  };
   if (e.mitralClose && e.aorticOpen)
-    phases.push_back({CyclePhaseKind::IsovolumicContraction, "isovolumic contraction", "IVC", *e.mitralClose,
-                      *e.aorticOpen});
-  if (e.aorticOpen && e.aorticClose)
-    phases.push_back({CyclePhaseKind::Ejection, "ejection", "ej.", *e.aorticOpen, *e.aorticClose});
+    add(CyclePhaseKind::IsovolumicContraction, HeartPhase::IsovolumicContraction, *e.mitralClose, *e.aorticOpen);
+  if (e.aorticOpen && e.aorticClose) add(CyclePhaseKind::Ejection, HeartPhase::Ejection, *e.aorticOpen, *e.aorticClose);
   if (e.aorticClose && e.mitralOpen)
-    phases.push_back({CyclePhaseKind::IsovolumicRelaxation, "isovolumic relaxation", "IVR", *e.aorticClose,
-                      *e.mitralOpen});
-  if (e.mitralOpen) phases.push_back({CyclePhaseKind::Filling, "filling", "fill.", *e.mitralOpen, beatEnd});
+    add(CyclePhaseKind::IsovolumicRelaxation, HeartPhase::IsovolumicRelaxation, *e.aorticClose, *e.mitralOpen);
+  if (e.mitralOpen) add(CyclePhaseKind::Filling, HeartPhase::Filling, *e.mitralOpen, beatEnd);
   return phases;
 }
 

@@ -10,6 +10,7 @@
 
 #include "cardiac/circulation/clinical_units.h"
 #include "viewer/plots/chart_drawing.h"
+#include "viewer/plots/label_row.h"
 
 namespace hs::viewer {
 namespace {
@@ -157,17 +158,25 @@ void drawPhaseBand(ImDrawList* draw, const ChartFrame& f, float top, float botto
   for (const CyclePhase& p : phases)
     draw->AddRectFilled(ImVec2(f.px((p.from - start) * 1000), top),
                         ImVec2(f.px((p.to - start) * 1000), bottom), phaseColour(p));
-  // The names after every tint: an abbreviation may reach over its neighbour.
+  // The names after every tint, each centred on its phase, or abbreviated when the name does not
+  // fit; an abbreviation wider than its phase (IVC lasts 30 to 60 ms) gets its tint behind it, so
+  // it reads as that phase's, and the row is spread so that no name covers its neighbour's.
+  std::vector<const char*> texts;
+  std::vector<float> xs, widths, spans;
   for (const CyclePhase& p : phases) {
     const float x0 = f.px((p.from - start) * 1000), x1 = f.px((p.to - start) * 1000);
     const char* text = ImGui::CalcTextSize(p.name).x + 4 <= x1 - x0 ? p.name : p.shortName;
     const float w = ImGui::CalcTextSize(text).x;
-    const float x = std::clamp((x0 + x1 - w) / 2, f.x0 + 1, f.x1 - w - 1);
-    // A name wider than its phase (IVC lasts 30 to 60 ms) gets its tint behind it, so it reads
-    // as that phase's and not its neighbour's.
-    if (w > x1 - x0)
-      draw->AddRectFilled(ImVec2(x - 2, top + 1), ImVec2(x + w + 2, bottom - 1), phaseColour(p));
-    draw->AddText(ImVec2(x, top + 1), kChartText, text);
+    texts.push_back(text);
+    xs.push_back((x0 + x1 - w) / 2);
+    widths.push_back(w);
+    spans.push_back(x1 - x0);
+  }
+  spreadLabelRow(xs, widths, f.x0 + 3, f.x1 - 3, 5);
+  for (std::size_t i = 0; i < phases.size(); ++i) {
+    if (widths[i] > spans[i])
+      draw->AddRectFilled(ImVec2(xs[i] - 2, top + 1), ImVec2(xs[i] + widths[i] + 2, bottom - 1), phaseColour(phases[i]));
+    draw->AddText(ImVec2(xs[i], top + 1), kChartText, texts[i]);
   }
   draw->AddRect(ImVec2(f.x0, top), ImVec2(f.x1 + 1, bottom + 1), kChartBorder);
 }

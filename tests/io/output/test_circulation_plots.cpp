@@ -43,6 +43,9 @@ CirculationSample syntheticSample(double t) {
   s.time = t * 1e-3;
   s.mitralOpen = t <= kMitralCloses || t > kMitralOpens;
   s.aorticOpen = t > kAorticOpens && t <= kAorticCloses;
+  // The ventricle contracts from the mitral valve's closure until it has relaxed (the phase
+  // band reads the isovolumic contraction from both valves shut while it contracts).
+  s.ventricularActivation = t > kMitralCloses && t <= 450 ? 1.0 : 0.0;
   double lv = 8 + 2 * t / kMitralCloses, volume = 120, aortic = 100 * std::exp(-(t + kBeatMs - 370) / tau);
   double mitralFlow = 0, aorticFlow = 0;
   if (t > 20 && t <= 70) lv = 10 + 70 * rise(t, 20, 50);

@@ -27,6 +27,7 @@ cardiac::StepSample sample() {
   s.step = 7;
   s.time = 0.035;
   s.phase = cardiac::Phase::Diastole;
+  s.heartPhase = cardiac::HeartPhase::Filling;
   s.cavity = 1.25e-4;
   s.tissue.volumeErrorMean = cardiac::Real(0.002);
   s.tissue.volumeErrorMax = cardiac::Real(0.03);
@@ -69,15 +70,17 @@ TEST(MetricsCsv, RowsMatchTheHeaderForEveryColumnSet) {
   for (const bool heart : {false, true})
     for (const bool blood : {false, true})
       for (const bool flows : {false, true}) writeOne({heart, blood, flows});
-  EXPECT_EQ(writeOne({}).size(), 3u) << "step, time, phase";
+  EXPECT_EQ(writeOne({}).size(), 4u) << "step, time, phase, wall_phase";
   EXPECT_EQ(writeOne({false, false, false}).at("phase"), "none") << "no heart, no phase";
+  EXPECT_EQ(writeOne({false, false, false}).at("wall_phase"), "none") << "no heart, no wall";
 }
 
 TEST(MetricsCsv, ValuesReadBackAsWritten) {
   const auto row = writeOne({true, true, true});
   EXPECT_EQ(row.at("step"), "7");
   EXPECT_DOUBLE_EQ(std::stod(row.at("time_s")), 0.035);
-  EXPECT_EQ(row.at("phase"), "diastole");
+  EXPECT_EQ(row.at("phase"), "filling") << "the heart's phase, from the valves";
+  EXPECT_EQ(row.at("wall_phase"), "diastole") << "the wall's own clock";
   EXPECT_DOUBLE_EQ(std::stod(row.at("cavity_volume_m3")), 1.25e-4);
   EXPECT_DOUBLE_EQ(std::stod(row.at("cavity_volume_ml")), 125.0);
   EXPECT_NEAR(std::stod(row.at("volume_error_max")), 0.03, 1e-7);

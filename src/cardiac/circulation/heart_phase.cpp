@@ -1,0 +1,93 @@
+#include "cardiac/circulation/heart_phase.h"
+
+namespace hs::cardiac {
+
+HeartPhase heartPhaseAfter(HeartPhase previous, const PhaseSignals& now) {
+  if (!now.valves) return HeartPhase::None;
+  if (now.aorticOpen && now.mitralOpen) return now.contracting ? HeartPhase::Ejection : HeartPhase::Filling;
+  if (now.aorticOpen) return HeartPhase::Ejection;
+  if (now.mitralOpen) return HeartPhase::Filling;
+  switch (previous) {
+    case HeartPhase::Ejection:
+    case HeartPhase::IsovolumicRelaxation:
+      return HeartPhase::IsovolumicRelaxation;
+    case HeartPhase::IsovolumicContraction:
+      return HeartPhase::IsovolumicContraction;
+    case HeartPhase::Filling:
+      return now.contracting ? HeartPhase::IsovolumicContraction : HeartPhase::Filling;
+    case HeartPhase::None:
+      break;
+  }
+  // The first step: both valves shut, so isovolumic; which one, by the muscle.
+  return now.contracting ? HeartPhase::IsovolumicContraction : HeartPhase::IsovolumicRelaxation;
+}
+
+const char* heartPhaseName(HeartPhase phase) {
+  switch (phase) {
+    case HeartPhase::IsovolumicContraction: return "isovolumic contraction";
+    case HeartPhase::Ejection: return "ejection";
+    case HeartPhase::IsovolumicRelaxation: return "isovolumic relaxation";
+    case HeartPhase::Filling: return "filling";
+    case HeartPhase::None: break;
+  }
+  return "";
+}
+
+const char* heartPhaseShortName(HeartPhase phase) {
+  switch (phase) {
+    case HeartPhase::IsovolumicContraction: return "IVC";
+    case HeartPhase::Ejection: return "ej.";
+    case HeartPhase::IsovolumicRelaxation: return "IVR";
+    case HeartPhase::Filling: return "fill.";
+    case HeartPhase::None: break;
+  }
+  return "";
+}
+
+const char* heartPhaseKey(HeartPhase phase) {
+  switch (phase) {
+    case HeartPhase::IsovolumicContraction: return "isovolumic_contraction";
+    case HeartPhase::Ejection: return "ejection";
+    case HeartPhase::IsovolumicRelaxation: return "isovolumic_relaxation";
+    case HeartPhase::Filling: return "filling";
+    case HeartPhase::None: break;
+  }
+  return "none";
+}
+
+const char* heartPhaseExplanation(HeartPhase phase) {
+  switch (phase) {
+    case HeartPhase::IsovolumicContraction:
+      return "The ventricle contracts with both valves shut: its pressure climbs, its volume stays, until it "
+             "exceeds the aorta's and the aortic valve opens.";
+    case HeartPhase::Ejection:
+      return "The aortic valve is open: the contracting ventricle pushes blood into the aorta and its volume falls.";
+    case HeartPhase::IsovolumicRelaxation:
+      return "The aortic valve has shut and the mitral valve is not yet open: the ventricle relaxes, its "
+             "pressure falls, its volume stays.";
+    case HeartPhase::Filling:
+      return "The mitral valve is open: blood flows in from the atrium, first as the ventricle relaxes (E "
+             "wave), then pushed by the atrium's contraction (A wave, the atrial kick).";
+    case HeartPhase::None: break;
+  }
+  return "This scenario has no valves: only the wall's own clock (contracting or relaxing) is known.";
+}
+
+bool heartPhaseLeaks(HeartPhase phase, double mitralBackward, double aorticBackward) {
+  const bool isovolumic = phase == HeartPhase::IsovolumicContraction || phase == HeartPhase::IsovolumicRelaxation;
+  return isovolumic && (mitralBackward > 0 || aorticBackward > 0);
+}
+
+std::string heartPhaseLabel(HeartPhase phase, const PhaseDetail& d) {
+  if (phase == HeartPhase::None)
+    return d.wallContracting ? "the wall contracts (no valves: only the wall's own clock)"
+                             : "the wall relaxes (no valves: only the wall's own clock)";
+  std::string label = heartPhaseName(phase);
+  if (phase == HeartPhase::Filling && d.atrialKick) label += ": atrial kick (A wave)";
+  if (heartPhaseLeaks(phase, d.mitralLeak ? 1.0 : 0.0, d.aorticLeak ? 1.0 : 0.0))
+    label += d.mitralLeak ? ": not isovolumic, blood leaks back into the atrium"
+                          : ": not isovolumic, blood leaks back from the aorta";
+  return label;
+}
+
+}  // namespace hs::cardiac
