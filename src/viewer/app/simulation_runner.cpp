@@ -173,7 +173,7 @@ void SimulationRunner::start(const cardiac::Scenario& scenario,
   settings.lumpedSamples = std::size_t(kLumpedSecondsKept / double(scenario.simulation.dt)) + 1;
   auto monitor = std::make_unique<cardiac::RunMonitor>(*sim, settings);
   std::optional<PumpReadout> pump;
-  if (sim->hasHeart()) pump.emplace(monitor->last().cavity, double(scenario.simulation.dt));
+  if (sim->hasHeart()) pump.emplace(monitor->last().cavity, double(scenario.simulation.dt), settlingRuleFor(scenario));
   access([&](SimulationState& s) {
     s.monitor = std::move(monitor);  // before the simulation it watches goes
     s.sim = std::move(sim);

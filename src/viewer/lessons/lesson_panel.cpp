@@ -67,6 +67,31 @@ void highlightedResult(const std::string& result) {
   ImGui::PopStyleColor();
 }
 
+// The beats of a rhythm that varies (atrial fibrillation), shortest interval first: the relation
+// the step teaches, a short filling time before a beat and a small stroke volume, read off a table.
+void playedBeatsTable(std::vector<PlayedBeat> beats) {
+  if (!rhythmVaries(beats)) return;
+  std::sort(beats.begin(), beats.end(),
+            [](const PlayedBeat& a, const PlayedBeat& b) { return a.intervalBeforeMs < b.intervalBeforeMs; });
+  ImGui::Spacing();
+  wrapped("The beats played, the shortest filling time first:");
+  if (!ImGui::BeginTable("played beats", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) return;
+  ImGui::TableSetupColumn("beat");
+  ImGui::TableSetupColumn("interval before (ms)");
+  ImGui::TableSetupColumn(("stroke volume (" + beats.front().volumeUnit + ")").c_str());
+  ImGui::TableHeadersRow();
+  for (const PlayedBeat& b : beats) {
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    ImGui::Text("#%d", b.index);
+    ImGui::TableSetColumnIndex(1);
+    ImGui::Text("%.0f", b.intervalBeforeMs);
+    ImGui::TableSetColumnIndex(2);
+    ImGui::Text("%.0f", b.strokeVolume);
+  }
+  ImGui::EndTable();
+}
+
 void stepBody(const LessonPlayer& player, LessonRequests& requests) {
   const LessonStep& step = player.step();
   if (!step.title.empty()) wrappedColoured(kTitleColour, step.title);
@@ -94,6 +119,7 @@ void stepBody(const LessonPlayer& player, LessonRequests& requests) {
   if (step.predict && player.chosen()) markedChoices(*step.predict, *player.chosen());
   ImGui::Spacing();
   highlightedResult(player.result());
+  playedBeatsTable(player.playedBeats());
   if (const std::string why = player.explanation(); !why.empty()) {
     ImGui::Spacing();
     wrapped(why);

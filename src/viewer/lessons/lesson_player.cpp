@@ -6,6 +6,14 @@
 
 namespace hs::viewer {
 
+bool rhythmVaries(const std::vector<PlayedBeat>& beats) {
+  if (beats.size() < 3) return false;
+  const auto [shortest, longest] = std::minmax_element(
+      beats.begin(), beats.end(),
+      [](const PlayedBeat& a, const PlayedBeat& b) { return a.intervalBeforeMs < b.intervalBeforeMs; });
+  return longest->intervalBeforeMs > 1.05 * shortest->intervalBeforeMs;
+}
+
 LessonPlayer::LessonPlayer(Lesson lesson, bool scripted) : m_lesson(std::move(lesson)), m_scripted(scripted) {
   if (m_lesson.steps.empty()) throw LessonError(m_lesson.source + ": a lesson needs at least one step");
 }
@@ -50,7 +58,10 @@ void LessonPlayer::frame(LessonRequests& requests, const ViewerStatus& status,
       // Fewer beats than at the start: the student restarted the simulation; count from there.
       m_beatBase = std::min(m_beatBase, beats);
       m_beatsPlayed = beats - m_beatBase;
-      if (m_beatsPlayed >= step().beats) finishStep(status);
+      // The result quotes a beat after the circulation has settled from the restart (PumpReadout's
+      // SettlingRule): until then the panel's `now` says "settling..." and the step plays on.
+      const bool settled = !status.pump.hasHeart || status.pump.beats.settled;
+      if (m_beatsPlayed >= step().beats && settled) finishStep(status, controls);
       break;
     }
     case StepStage::Done:
@@ -150,7 +161,7 @@ void LessonPlayer::begin(const ViewerStatus& status, ViewerControls& controls) {
   }
   m_stage = StepStage::Playing;
   controls.playing = true;
-  if (step().beats == 0) finishStep(status);
+  if (step().beats == 0) finishStep(status, controls);
 }
 
 void LessonPlayer::answer(int choice, const ViewerStatus& status, ViewerControls& controls) {
@@ -161,14 +172,22 @@ void LessonPlayer::answer(int choice, const ViewerStatus& status, ViewerControls
   m_stage = StepStage::Playing;
   m_beatBase = status.pump.beats.beatsCompleted;
   controls.playing = true;
-  if (step().beats == 0) finishStep(status);
+  if (step().beats == 0) finishStep(status, controls);
 }
 
-void LessonPlayer::finishStep(const ViewerStatus& status) {
+void LessonPlayer::finishStep(const ViewerStatus& status, ViewerControls& controls) {
   m_stage = StepStage::Done;
+  // Paused on the beat the result quotes, so that the panels beside it show the same beat.
+  if (step().beats > 0) controls.playing = false;
   m_doneFrames = 0;
   m_measured = measuredFigures(status);
   if (!step().mark.empty()) m_marks[step().mark] = m_measured;
+  m_played.clear();
+  const std::vector<cardiac::BeatSummary>& recent = status.pump.beats.recent;
+  for (std::size_t i = 1; i < recent.size(); ++i)
+    if (recent[i].index > m_beatBase && recent[i - 1].index + 1 == recent[i].index)
+      m_played.push_back({recent[i].index, 1e3 * recent[i - 1].duration,
+                          clinicalFigures(recent[i], status.pump.scale).strokeVolume, status.pump.scale.volumeUnit});
 }
 
 void LessonPlayer::next(const std::vector<ScenarioChoice>& scenarios) {

@@ -40,6 +40,17 @@ struct LessonRequests {
   bool close = false;  // hide the lesson window
 };
 
+// One beat a step played, for the table of a rhythm that varies: the interval before it (the
+// filling time it had, the previous beat's length) and what it ejected.
+struct PlayedBeat {
+  int index = 0;               // the panel's beat number
+  double intervalBeforeMs = 0;  // RR interval before the beat
+  double strokeVolume = 0;      // in the panel's volume unit
+  std::string volumeUnit;       // "mL"
+};
+// The beats worth a table: at least three, their intervals differing by more than 5%.
+bool rhythmVaries(const std::vector<PlayedBeat>& beats);
+
 class LessonPlayer {
  public:
   LessonPlayer(Lesson lesson, bool scripted);
@@ -63,6 +74,8 @@ class LessonPlayer {
   [[nodiscard]] std::string result() const;
   [[nodiscard]] std::string explanation() const;
   [[nodiscard]] const LessonFigures& measured() const { return m_measured; }
+  // The beats the finished step played (settled ones, whose interval before is known).
+  [[nodiscard]] const std::vector<PlayedBeat>& playedBeats() const { return m_played; }
   // Predictions answered right so far, and answered at all (each step counted once).
   [[nodiscard]] int rightAnswers() const;
   [[nodiscard]] int answered() const { return int(m_answers.size()); }
@@ -94,7 +107,7 @@ class LessonPlayer {
   void writeEdit(const Edit& edit, ViewerControls& controls) const;
   void begin(const ViewerStatus& status, ViewerControls& controls);
   void answer(int choice, const ViewerStatus& status, ViewerControls& controls);
-  void finishStep(const ViewerStatus& status);
+  void finishStep(const ViewerStatus& status, ViewerControls& controls);
   void next(const std::vector<ScenarioChoice>& scenarios);
 
   Lesson m_lesson;
@@ -108,6 +121,7 @@ class LessonPlayer {
   std::optional<int> m_chosen;
   std::map<int, bool> m_answers;  // step -> answered right
   LessonFigures m_measured;
+  std::vector<PlayedBeat> m_played;
   std::map<std::string, LessonFigures, std::less<>> m_marks;
   bool m_finished = false, m_closed = false;
   bool m_started = false;

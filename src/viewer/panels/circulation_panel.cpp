@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "cardiac/circulation/clinical_units.h"
@@ -24,14 +25,22 @@ void beatReadout(const CirculationStatus& s) {
   }
   const cardiac::LumpedBeatFigures& b = *s.lastBeat;
   const double ef = b.edv > 0 ? 100 * b.totalStrokeVolume() / b.edv : 0;
+  // SV as the pump panel and the lessons give it (EDV - ESV); with a leaking valve the forward
+  // part beside it.
+  const double sv = b.totalStrokeVolume() / kCubicMetresPerMl, forward = b.forwardStrokeVolume / kCubicMetresPerMl;
   ImGui::Text("Last beat:  BP %.0f/%.0f mmHg   LVEDP %.0f mmHg   SV %.0f mL   EF %.0f%%",
               b.aorticSystolic / kPascalPerMmHg, b.aorticDiastolic / kPascalPerMmHg,
-              b.lvEndDiastolic / kPascalPerMmHg, b.forwardStrokeVolume / kCubicMetresPerMl, ef);
+              b.lvEndDiastolic / kPascalPerMmHg, sv, ef);
+  if (std::lround(forward) != std::lround(sv)) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("(forward %.0f mL)", forward);
+  }
   tooltip(
       "The last complete beat of the lumped circulation:\n"
       "BP: aortic systolic / diastolic pressure (normal about 120/80 mmHg);\n"
       "LVEDP: the ventricle's end-diastolic pressure (normal 4 to 12 mmHg);\n"
-      "SV: the stroke volume, ejected through the aortic valve (normal about 70 mL);\n"
+      "SV: the stroke volume, EDV - ESV (normal about 70 mL); with a leaking valve the part ejected\n"
+      "forward through the aortic valve is given beside it;\n"
       "EF: (EDV - ESV) / EDV (normal 55 to 70 %).\n"
       "The right panel reads the 3D heart's cavity, which follows this model's volume.");
 }

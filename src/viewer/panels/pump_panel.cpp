@@ -185,7 +185,8 @@ void beatTable(PumpControls& c, const PumpStatus& s, const RunComparison& runs) 
   tooltip("The last complete beat, from one systole's start to the next");
   ImGui::TableSetColumnIndex(2);
   ImGui::TextUnformatted("now");
-  tooltip("This run: the mean of its last complete beats (up to 5; the row below says how many)");
+  tooltip("This run: the mean of its last complete beats since the circulation settled (up to 5; the row "
+          "below says how many)");
   if (previous) {
     ImGui::TableSetColumnIndex(3);
     ImGui::TextUnformatted("before");
@@ -197,7 +198,13 @@ void beatTable(PumpControls& c, const PumpStatus& s, const RunComparison& runs) 
   ImGui::TableSetColumnIndex(1);
   ImGui::TextDisabled(b.last ? "1 beat" : "-");
   ImGui::TableSetColumnIndex(2);
-  ImGui::TextDisabled("%s", now ? beatsText(now->count).c_str() : "-");
+  const bool settling = b.last && !b.settled;
+  ImGui::TextDisabled("%s", now ? beatsText(now->count).c_str() : settling ? "settling..." : "-");
+  if (settling)
+    tooltip("After a restart the circulation starts from rest and takes a few beats to find its balance. "
+            "'now' averages only the beats after it has settled: a beat whose end-diastolic and end-systolic "
+            "volumes are both within 1% of the beat before's (an irregular rhythm: after three time "
+            "constants of the arteries, R x C).");
   if (previous) {
     ImGui::TableSetColumnIndex(3);
     ImGui::TextDisabled("%s", before ? beatsText(before->count).c_str() : "other units");
@@ -210,7 +217,8 @@ void beatTable(PumpControls& c, const PumpStatus& s, const RunComparison& runs) 
     ImGui::TableSetColumnIndex(1);
     cell(last, row, "No complete beat yet");
     ImGui::TableSetColumnIndex(2);
-    cell(now ? std::optional(now->figures) : std::nullopt, row, "No complete beat yet");
+    cell(now ? std::optional(now->figures) : std::nullopt, row,
+         settling ? "The circulation is still settling after the restart" : "No complete beat yet");
     if (previous) {
       ImGui::TableSetColumnIndex(3);
       cell(before ? std::optional(before->figures) : std::nullopt, row,

@@ -1,5 +1,7 @@
 #include "viewer/plots/pump_readout.h"
 
+#include <cmath>
+
 namespace hs::viewer {
 
 ClinicalFigures clinicalFigures(const cardiac::BeatSummary& beat, const VolumeScale& scale) {
@@ -43,8 +45,25 @@ PumpSample pumpSample(const cardiac::StepSample& step) {
   return sample;
 }
 
-PumpReadout::PumpReadout(double initialVolume, double dt)
-    : m_tracker(initialVolume, dt), m_dt(dt), m_lastVolume(initialVolume) {}
+SettlingRule settlingRuleFor(const cardiac::Scenario& scenario) {
+  SettlingRule rule;
+  rule.irregular = scenario.cycle.pattern != cardiac::BeatPattern::Normal;
+  const cardiac::LumpedParameters& p = scenario.circulation.lumpedParameters;
+  rule.settledAfter = scenario.circulation.lumped ? 3 * p.peripheralResistance * p.arterialCompliance
+                                                  : 3 * 60.0 / double(scenario.cycle.heartRateBpm);
+  return rule;
+}
+
+bool beatSettles(const SettlingRule& rule, const cardiac::BeatSummary& beat,
+                 const std::optional<cardiac::BeatSummary>& previous) {
+  if (rule.irregular) return beat.startTime >= rule.settledAfter;
+  if (!previous || !(previous->edv > 0) || !(previous->esv > 0)) return false;
+  return std::abs(beat.edv / previous->edv - 1) <= rule.tolerance &&
+         std::abs(beat.esv / previous->esv - 1) <= rule.tolerance;
+}
+
+PumpReadout::PumpReadout(double initialVolume, double dt, SettlingRule settling)
+    : m_tracker(initialVolume, dt), m_settling(settling), m_dt(dt), m_lastVolume(initialVolume) {}
 
 void PumpReadout::record(double startTime, cardiac::Phase phase, double volume,
                          const cardiac::ValveFlows& flows) {
@@ -55,9 +74,11 @@ void PumpReadout::record(double startTime, cardiac::Phase phase, double volume,
     // tracker, starting from the volume before the step, takes the new beat.
     m_tracker.record(startTime, phase, volume, flows);
     if (!m_tracker.beats().empty()) {
+      const std::optional<cardiac::BeatSummary> previous = m_last;
       m_last = m_tracker.beats().back();
       m_last->index = ++m_completed;
-      m_recent.push_back(*m_last);
+      m_settled = m_settled || beatSettles(m_settling, *m_last, previous);
+      if (m_settled) m_recent.push_back(*m_last);
       if (m_recent.size() > kRecentBeats) m_recent.erase(m_recent.begin());
     }
     m_tracker = cardiac::BeatTracker(m_lastVolume, m_dt);
@@ -73,6 +94,7 @@ BeatReadings PumpReadout::readings() const {
   BeatReadings r;
   r.last = m_last;
   r.recent = m_recent;
+  r.settled = m_settled;
   r.beatsCompleted = m_completed;
   r.beating = m_beating;
   r.currentEdv = m_currentEdv;

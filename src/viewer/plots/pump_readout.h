@@ -11,6 +11,7 @@
 #include "cardiac/circulation.h"
 #include "cardiac/circulation/beat_metrics.h"
 #include "cardiac/run_monitor.h"
+#include "cardiac/scenario.h"
 
 namespace hs::viewer {
 
@@ -52,11 +53,33 @@ void setFlowRates(PumpSample& sample, const cardiac::ValveFlows& flows, double d
 // The plots' sample of a step the run monitor gathered.
 PumpSample pumpSample(const cardiac::StepSample& step);
 
+// When the beats after a restart have settled (the circulation starts from rest each time and
+// takes a few beats to find its new balance: with the resistance doubled, EF climbs from 41% to
+// 48% over ten beats). A regular rhythm has settled at the first beat whose end-diastolic and
+// end-systolic volumes are both within `tolerance` of the beat before's. An irregular rhythm
+// varies from beat to beat by design, so there the beats count from `settledAfter` seconds on
+// (three time constants R C of the arterial Windkessel, or three regular beats without it:
+// settlingRuleFor in the viewer's runner). Once settled, every later beat counts.
+struct SettlingRule {
+  bool irregular = false;
+  double tolerance = 0.01;
+  double settledAfter = 0;  // s, irregular rhythms only
+};
+// The rule for a scenario: irregular for the irregular and inconsistent patterns, which settle
+// after three time constants R C of the lumped Windkessel (or three beats without one).
+SettlingRule settlingRuleFor(const cardiac::Scenario& scenario);
+// True when `beat` has settled, `previous` being the complete beat before it (none for the first).
+bool beatSettles(const SettlingRule& rule, const cardiac::BeatSummary& beat,
+                 const std::optional<cardiac::BeatSummary>& previous);
+
 // The beat in progress, the last complete one and the few before it.
 struct BeatReadings {
   std::optional<cardiac::BeatSummary> current;  // once its systole has ended (ESV known)
   std::optional<cardiac::BeatSummary> last;     // the last complete beat
-  std::vector<cardiac::BeatSummary> recent;     // the last complete beats, oldest first
+  // The last complete beats since the circulation settled (SettlingRule), oldest first: what
+  // `now` and `before` average. Empty while it settles.
+  std::vector<cardiac::BeatSummary> recent;
+  bool settled = false;  // a beat has settled
   int beatsCompleted = 0;
   bool beating = false;     // a beat is in progress
   double currentEdv = 0;    // m^3, the beat in progress's end-diastolic volume
@@ -73,7 +96,7 @@ class PumpReadout {
   static constexpr std::size_t kRecentBeats = 8;
 
   // initialVolume: the cavity volume before the first step (m^3); dt: the step (s).
-  PumpReadout(double initialVolume, double dt);
+  PumpReadout(double initialVolume, double dt, SettlingRule settling = {});
   void record(double startTime, cardiac::Phase phase, double volume, const cardiac::ValveFlows& flows);
   [[nodiscard]] BeatReadings readings() const;
 
@@ -82,6 +105,8 @@ class PumpReadout {
   std::optional<cardiac::BeatSummary> m_last;
   std::vector<cardiac::BeatSummary> m_recent;
   int m_completed = 0;
+  SettlingRule m_settling;
+  bool m_settled = false;
   double m_dt = 0;
   double m_lastVolume = 0;
   double m_currentEdv = 0, m_currentStart = 0;

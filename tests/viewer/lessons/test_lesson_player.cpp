@@ -189,3 +189,50 @@ TEST(LessonPlayer, StepScreenshotsSitBesideTheFinalOne) {
 
 }  // namespace
 }  // namespace hs::viewer
+
+namespace hs::viewer {
+namespace {
+
+cardiac::BeatSummary playedBeat(int index, double durationS, double edvMl, double esvMl) {
+  cardiac::BeatSummary b;
+  b.index = index;
+  b.duration = durationS;
+  b.complete = true;
+  b.edv = edvMl * 1e-6;
+  b.esv = esvMl * 1e-6;
+  return b;
+}
+
+// The step waits for the circulation to settle, then pauses on the beat its result quotes (the
+// panels beside it show the same beat), and keeps the beats it played with the interval before
+// each: atrial fibrillation's table of short intervals and small stroke volumes.
+TEST(LessonPlayer, AStepEndsOnASettledBeatPausedAndKeepsTheBeatsItPlayed) {
+  LessonPlayer player(twoStepLesson(), false);
+  ViewerControls controls;
+  ViewerStatus status = statusWith(5);
+  status.pump.hasHeart = true;
+  frame(player, status, controls);
+  ASSERT_EQ(player.stage(), StepStage::Playing);
+  status.pump.beats.beatsCompleted = 7;  // two beats played, but the circulation still settles
+  frame(player, status, controls);
+  EXPECT_EQ(player.stage(), StepStage::Playing) << "no result from unsettled beats";
+  status.pump.beats.beatsCompleted = 8;
+  status.pump.beats.settled = true;
+  status.pump.scale = volumeScaleFor(120e-6);
+  status.pump.beats.recent = {playedBeat(5, 0.83, 120, 50), playedBeat(6, 0.55, 118, 48),
+                              playedBeat(7, 1.10, 100, 45), playedBeat(8, 0.70, 125, 48)};
+  frame(player, status, controls);
+  ASSERT_EQ(player.stage(), StepStage::Done);
+  EXPECT_FALSE(controls.playing) << "paused on the beat the result quotes";
+  const std::vector<PlayedBeat>& played = player.playedBeats();
+  ASSERT_EQ(played.size(), 3u) << "beats 6, 7 and 8: played in this step, the interval before each known";
+  EXPECT_EQ(played[0].index, 6);
+  EXPECT_DOUBLE_EQ(played[0].intervalBeforeMs, 830);
+  EXPECT_DOUBLE_EQ(played[1].intervalBeforeMs, 550);
+  EXPECT_NEAR(played[1].strokeVolume, 55, 1e-9) << "the beat after the short interval ejects little";
+  EXPECT_TRUE(rhythmVaries(played));
+  EXPECT_FALSE(rhythmVaries({{1, 830, 70, "mL"}, {2, 833, 70, "mL"}, {3, 831, 70, "mL"}})) << "a regular rhythm";
+}
+
+}  // namespace
+}  // namespace hs::viewer
