@@ -51,7 +51,8 @@ TEST_P(PatientBlood, VesselsRiseFromTheAnnuliToPinnedCircularEnds) {
     // The vessel's tets hold every ring vertex: the vessel is joined to the wall, not beside it.
     std::set<Index> joined;
     for (const pbd::Tet& t : m.mesh.tets) {
-      const bool vessel = std::any_of(t.begin(), t.end(), [&](Index v) { return m.region[v] == region; });
+      // region copied into the lambda: clang 14 (the asan-ci preset) cannot capture a structured binding.
+      const bool vessel = std::any_of(t.begin(), t.end(), [&, region = region](Index v) { return m.region[v] == region; });
       if (vessel) joined.insert(t.begin(), t.end());
     }
     for (Index v : *ring) EXPECT_TRUE(joined.count(v)) << "ring vertex " << v;
