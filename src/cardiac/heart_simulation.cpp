@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "cardiac/motion/ecg.h"
 #include "cardiac/motion/heart_activation.h"
 
 namespace hs::cardiac {
@@ -175,6 +176,16 @@ void HeartSimulation::endStep(const pbd::StepContext& context) {
   const BloodLoop::Turnover turnover =
       c.settings.loop ? c.loop.circulate(m_particles, m_firstBloodParticle) : BloodLoop::Turnover{};
   c.meter.recordLoop(turnover.returned, turnover.reentered, c.loop.waiting());
+}
+
+double HeartSimulation::ecgMillivolts() const {
+  if (!m_lumped || !m_cycle || m_cycle->regions().empty()) return std::numeric_limits<double>::quiet_NaN();
+  const BeatClock& main = m_cycle->regions().front().clock;
+  const Real dt = m_scenario.simulation.dt;
+  const int since = main.stepsSinceSystoleStarted(dt), until = main.stepsUntilSystole(dt);
+  return syntheticEcg(time(), since >= 0 ? double(since) * double(dt) : -1.0,
+                      until >= 0 ? double(until) * double(dt) : -1.0, m_beatTiming,
+                      m_scenario.circulation.atrialContraction);
 }
 
 bool HeartSimulation::wallCanYield() const {

@@ -76,6 +76,9 @@ class HeartSimulation {
   [[nodiscard]] std::int64_t stepCount() const { return m_steps; }
   // Phase during the last step (what the wall was doing), Systole before the first.
   [[nodiscard]] Phase lastPhase() const { return m_lastPhase; }
+  // The synthetic ECG (mV, motion/ecg.h) at the end of the last step, from the main region's
+  // beat clock; NaN without the lumped circulation (its beat timing places the waves).
+  [[nodiscard]] double ecgMillivolts() const;
 
   // Heart and blood: the flow path's pieces (valves, flow meter, loop); null otherwise.
   [[nodiscard]] const Circulation* circulation() const { return m_circulation ? &*m_circulation : nullptr; }

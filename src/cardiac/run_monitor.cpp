@@ -154,6 +154,9 @@ const Verdict& RunMonitor::observe() {
   if (!check(sample.tissue, sample.cavity)) return m_verdict;
   gather(sample);
   sample.heartPhase = heartPhaseAfter(m_last.heartPhase, phaseSignals(sample));
+  // No sound at the first step: its phase is read without the one before.
+  if (m_last.heartPhase != HeartPhase::None) sample.heartSound = heartSoundAt(m_last.heartPhase, sample.heartPhase);
+  if (sample.lumped) sample.ecg = m_sim.ecgMillivolts();
   ++m_observed;
   m_extremes.add(sample, m_sim.hasHeart() && m_settings.pump);
   if (m_sim.hasHeart() && m_settings.beatList) m_beats.record(sample.startTime, sample.phase, sample.cavity, sample.flows);
@@ -189,6 +192,7 @@ void RunMonitor::recordCirculation(const StepSample& sample) {
   step.phase = sample.phase;
   step.cavity = sample.cavity;
   step.lumped = *sample.lumped;
+  step.lumped.ecg = sample.ecg;
   step.aorticForward = sample.flows.aorticForward;
   step.aorticBackward = sample.flows.aorticBackward;
   step.aorticJet = sample.flowStep.aorticJet;
@@ -278,12 +282,12 @@ std::string heartPhaseLabel(const StepSample& s) {
 }
 
 void StepSample::save(pbd::StateWriter& w) const {
-  w.fields(step, startTime, time, phase, heartPhase, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
+  w.fields(step, startTime, time, phase, heartPhase, heartSound, ecg, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
            contraction, baseDescent, vesselFill, surfaceTurn, bloodPush);
 }
 
 void StepSample::load(pbd::StateReader& r) {
-  r.fields(step, startTime, time, phase, heartPhase, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
+  r.fields(step, startTime, time, phase, heartPhase, heartSound, ecg, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
            contraction, baseDescent, vesselFill, surfaceTurn, bloodPush);
 }
 

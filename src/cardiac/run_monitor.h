@@ -76,6 +76,8 @@ struct StepSample {
   Phase phase = Phase::Rest;       // the wall's own clock during the step
   // The heart's phase from the valves (heart_phase.h; None without valves or figures gathered).
   HeartPhase heartPhase = HeartPhase::None;
+  HeartSound heartSound = HeartSound::None;  // a sound that starts in this step
+  double ecg = 0;  // mV, the synthetic ECG at the step's end (circulation.lumped; motion/ecg.h)
   double cavity = 0;               // m^3, at the end
   TissueStats tissue;
   Real restDeviation = 0;

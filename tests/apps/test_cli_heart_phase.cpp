@@ -7,6 +7,7 @@
 // regurgitation the isovolumic phases keep their names but lose volume into the atrium.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -29,7 +30,7 @@ using hs::testing::scratchDir;
 struct Csv {
   std::map<std::string, std::size_t> column;
   std::vector<std::vector<std::string>> rows;
-  const std::string& at(std::size_t row, const std::string& name) const { return rows[row][column.at(name)]; }
+  const std::string& at(std::size_t row, const std::string& name) const { return rows.at(row).at(column.at(name)); }
   double number(std::size_t row, const std::string& name) const { return std::stod(at(row, name)); }
 };
 
@@ -41,6 +42,7 @@ Csv readCsv(const std::filesystem::path& file) {
     std::vector<std::string> out;
     std::stringstream s(l);
     for (std::string f; std::getline(s, f, ',');) out.push_back(f);
+    if (!l.empty() && l.back() == ',') out.emplace_back();  // an empty last field (heart_sound)
     return out;
   };
   std::getline(in, line);
@@ -123,6 +125,81 @@ TEST(CliHeartPhase, ThePhaseFollowsTheValvesOnEveryStepOfThreeBeats) {
       EXPECT_GT(leaked, 1.0) << "mL back into the atrium in the isovolumic contractions";
     }
   }
+}
+
+// The ECG (motion/ecg.h) and the heart sounds in metrics.csv: in `normal` each R peak comes
+// before the mitral valve's closure (S1, the isovolumic contraction's start) and each T wave ends
+// near the aortic valve's closure (S2); a P wave before every QRS. In `irregular` (atrial
+// fibrillation) no P wave, and the RR intervals vary.
+struct EcgBeats {
+  std::vector<double> s1, s2;                 // s, the rows whose heart_sound is S1 / S2
+  std::vector<double> rPeak, tEnd, pMax;      // per beat with both neighbours inside the run
+};
+
+EcgBeats ecgBeats(const Csv& csv) {
+  EcgBeats e;
+  std::vector<double> t, v;
+  for (std::size_t i = 0; i < csv.rows.size(); ++i) {
+    t.push_back(csv.number(i, "time_s"));
+    v.push_back(csv.number(i, "ecg_mv"));
+    if (csv.at(i, "heart_sound") == "S1") e.s1.push_back(t.back());
+    if (csv.at(i, "heart_sound") == "S2") e.s2.push_back(t.back());
+  }
+  auto argmax = [&](double from, double to) {
+    std::size_t best = 0;
+    bool any = false;
+    for (std::size_t i = 0; i < t.size(); ++i)
+      if (t[i] >= from && t[i] <= to && (!any || v[i] > v[best])) best = i, any = true;
+    return best;
+  };
+  for (std::size_t b = 0; b < e.s1.size(); ++b) {
+    const double mc = e.s1[b];
+    if (mc < 0.35) continue;  // the first beat has no P wave recorded before it
+    e.rPeak.push_back(t[argmax(mc - 0.15, mc + 0.05)]);
+    e.pMax.push_back(v[argmax(mc - 0.30, mc - 0.09)]);
+    const auto ac = std::find_if(e.s2.begin(), e.s2.end(), [&](double x) { return x > mc; });
+    if (ac == e.s2.end()) continue;
+    const std::size_t peak = argmax(mc + 0.12, *ac + 0.05);
+    std::size_t end = peak;
+    while (end + 1 < v.size() && v[end] > 0.1 * v[peak]) ++end;
+    e.tEnd.push_back(t[end] - *ac);
+  }
+  return e;
+}
+
+TEST(CliHeartPhase, TheEcgPlacesItsWavesByTheValvesAndFibrillationHasNoPWave) {
+  const auto dir = scratchDir("heart_ecg");
+  EcgBeats beats[2];
+  const std::string names[2] = {"normal", "irregular"};
+  for (int k = 0; k < 2; ++k) {
+    const CliResult r = runHeartsim(
+        "run " + names[k] + " --set blood.enabled=false --duration 6 --threads 1 --out " + names[k], dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    beats[k] = ecgBeats(readCsv(dir / names[k] / "metrics.csv"));
+  }
+  const EcgBeats& normal = beats[0];
+  ASSERT_GE(normal.rPeak.size(), 5u);
+  ASSERT_GE(normal.tEnd.size(), 5u);
+  EXPECT_NEAR(double(normal.s1.size()), double(normal.s2.size()), 1.0) << "one S1 and one S2 a beat";
+  for (std::size_t b = 0; b < normal.rPeak.size(); ++b) {
+    const double mc = *std::find_if(normal.s1.begin(), normal.s1.end(), [&](double x) { return x >= normal.rPeak[b]; });
+    EXPECT_LT(normal.rPeak[b], mc) << "beat " << b << ": the R peak before the mitral valve's closure";
+    EXPECT_GT(normal.pMax[b], 0.12) << "beat " << b << ": a P wave";
+  }
+  for (const double offset : normal.tEnd) EXPECT_LT(std::abs(offset), 0.04) << "the T wave ends at aortic closure";
+  const EcgBeats& af = beats[1];
+  ASSERT_GE(af.pMax.size(), 4u);
+  for (const double p : af.pMax) EXPECT_LT(p, 0.1) << "no P wave in atrial fibrillation";
+  auto variation = [](const std::vector<double>& s1) {
+    std::vector<double> rr;
+    for (std::size_t i = 1; i < s1.size(); ++i) rr.push_back(s1[i] - s1[i - 1]);
+    double mean = 0, var = 0;
+    for (const double x : rr) mean += x / double(rr.size());
+    for (const double x : rr) var += (x - mean) * (x - mean) / double(rr.size());
+    return std::sqrt(var) / mean;
+  };
+  EXPECT_LT(variation(normal.s1), 0.01) << "a regular rhythm";
+  EXPECT_GT(variation(af.s1), 0.05) << "irregular RR intervals";
 }
 
 }  // namespace

@@ -48,6 +48,23 @@ int BeatClock::diastoleLength(Real dt) const {
   return std::max(1, int(std::lround(regular.diastole * m_diastoleShare)));
 }
 
+int BeatClock::stepsSinceSystoleStarted(Real dt) const {
+  if (m_phase == Phase::Systole) return m_steps;
+  if (m_phase == Phase::Diastole && !m_delayed && m_systolesCompleted > 0) return lengths(dt).systole + m_steps;
+  return -1;
+}
+
+int BeatClock::stepsUntilSystole(Real dt) const {
+  if (m_phase == Phase::Diastole) {
+    const bool last = m_settings.beats > 0 && m_systolesCompleted >= m_settings.beats;
+    return last ? -1 : diastoleLength(dt) - m_steps;
+  }
+  if (m_phase != Phase::Systole) return -1;
+  const bool last = m_settings.beats > 0 && m_systolesCompleted + 1 >= m_settings.beats;
+  const Lengths regular = lengths(dt);
+  return last ? -1 : regular.systole - m_steps + regular.diastole;
+}
+
 Real BeatClock::advance(Real dt) {
   if (m_phase == Phase::Rest) return 0;
   if (m_delayed && m_steps == 0 && diastoleLength(dt) <= 0) {  // a delay shorter than half a step

@@ -62,6 +62,11 @@ class BeatClock {
   [[nodiscard]] int systolesCompleted() const { return m_systolesCompleted; }
   // Length (steps of dt) of the diastole in progress or to come.
   [[nodiscard]] int diastoleLength(Real dt) const;
+  // Steps since the current or last systole began (-1 before the first and at rest), and until
+  // the next begins (-1 at rest or when the beats are over). In systole the diastole to come is
+  // taken as a regular one (an irregular rhythm draws its length when it begins).
+  [[nodiscard]] int stepsSinceSystoleStarted(Real dt) const;
+  [[nodiscard]] int stepsUntilSystole(Real dt) const;
   // Checkpoints: the phase, its step count and the random stream (state_stream.h).
   void save(pbd::StateWriter& w) const;
   void load(pbd::StateReader& r);

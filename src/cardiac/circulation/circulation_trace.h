@@ -19,6 +19,7 @@ struct CirculationSample {
   bool aorticOpen = false;
   double ventricularActivation = 0;  // in [0, 1] during the step (times the beating share)
   double atrialActivation = 0;       // in [0, 1]
+  double ecg = 0;  // mV, the synthetic ECG at the step's end (set by the run monitor: motion/ecg.h)
   void save(pbd::StateWriter& w) const;
   void load(pbd::StateReader& r);
 };

@@ -78,6 +78,22 @@ bool heartPhaseLeaks(HeartPhase phase, double mitralBackward, double aorticBackw
   return isovolumic && (mitralBackward > 0 || aorticBackward > 0);
 }
 
+HeartSound heartSoundAt(HeartPhase previous, HeartPhase now) {
+  if (now == HeartPhase::IsovolumicContraction && previous != HeartPhase::IsovolumicContraction) return HeartSound::S1;
+  if (now == HeartPhase::Ejection && previous == HeartPhase::Filling) return HeartSound::S1;
+  if (previous == HeartPhase::Ejection && now != HeartPhase::Ejection) return HeartSound::S2;
+  return HeartSound::None;
+}
+
+const char* heartSoundName(HeartSound sound) {
+  switch (sound) {
+    case HeartSound::S1: return "S1";
+    case HeartSound::S2: return "S2";
+    case HeartSound::None: break;
+  }
+  return "";
+}
+
 std::string heartPhaseLabel(HeartPhase phase, const PhaseDetail& d) {
   if (phase == HeartPhase::None)
     return d.wallContracting ? "the wall contracts (no valves: only the wall's own clock)"

@@ -60,6 +60,14 @@ const char* heartPhaseExplanation(HeartPhase phase);
 // (backward flow through it in the step, m^3): the volume is then not constant.
 bool heartPhaseLeaks(HeartPhase phase, double mitralBackward, double aorticBackward);
 
+// The heart sounds, where the phase says the valves close: S1 ("lub") as the ventricle's
+// contraction shuts the mitral valve (the isovolumic contraction begins, or ejection straight
+// after filling), S2 ("dub") as the aortic valve shuts (ejection ends).
+enum class HeartSound : std::uint8_t { None = 0, S1 = 1, S2 = 2 };
+HeartSound heartSoundAt(HeartPhase previous, HeartPhase now);
+// "S1", "S2" or "" (metrics.csv's heart_sound column).
+const char* heartSoundName(HeartSound sound);
+
 // What a label adds to the phase's name.
 struct PhaseDetail {
   bool wallContracting = false;  // the wall's own clock is in systole (named when there are no valves)

@@ -200,11 +200,11 @@ void LumpedCirculation::load(pbd::StateReader& r) {
 }
 
 void CirculationSample::save(pbd::StateWriter& w) const {
-  w.fields(time, lvVolume, lvPressure, laPressure, aorticPressure, mitralFlow, aorticFlow, mitralOpen, aorticOpen, ventricularActivation, atrialActivation);
+  w.fields(time, lvVolume, lvPressure, laPressure, aorticPressure, mitralFlow, aorticFlow, mitralOpen, aorticOpen, ventricularActivation, atrialActivation, ecg);
 }
 
 void CirculationSample::load(pbd::StateReader& r) {
-  r.fields(time, lvVolume, lvPressure, laPressure, aorticPressure, mitralFlow, aorticFlow, mitralOpen, aorticOpen, ventricularActivation, atrialActivation);
+  r.fields(time, lvVolume, lvPressure, laPressure, aorticPressure, mitralFlow, aorticFlow, mitralOpen, aorticOpen, ventricularActivation, atrialActivation, ecg);
 }
 
 }  // namespace hs::cardiac

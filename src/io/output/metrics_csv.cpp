@@ -29,7 +29,7 @@ void writeLumpedRow(std::ostream& csv, const cardiac::StepSample& sample) {
       << l.lvVolume * kMlPerM3 << ',' << l.mitralFlow * kMlPerM3 << ',' << l.aorticFlow * kMlPerM3 << ','
       << int(l.mitralOpen) << ',' << int(l.aorticOpen) << ',' << l.ventricularActivation << ','
       << l.atrialActivation << ',' << sample.contraction << ',' << sample.baseDescent * 1e3 << ','
-      << sample.vesselFill;
+      << sample.vesselFill << ',' << sample.ecg << ',' << cardiac::heartSoundName(sample.heartSound);
 }
 
 }  // namespace
@@ -49,7 +49,7 @@ void writeMetricsHeader(std::ostream& csv, const MetricsColumns& columns) {
   if (columns.lumped)
     csv << ",lv_pressure_mmhg,aortic_pressure_mmhg,la_pressure_mmhg,lumped_lv_volume_ml,lumped_mitral_flow_ml_s,"
            "lumped_aortic_flow_ml_s,lumped_mitral_open,lumped_aortic_open,activation_ventricle,activation_atrium,"
-           "wall_contraction,base_descent_mm,vessel_fill";
+           "wall_contraction,base_descent_mm,vessel_fill,ecg_mv,heart_sound";
   csv << '\n';
 }
 

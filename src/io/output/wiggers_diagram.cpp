@@ -22,10 +22,10 @@ using cardiac::CirculationSample;
 // would be smaller than a lecture slide needs.
 constexpr int kTextScale = 2;
 constexpr int kWidth = 1000, kHeight = 1100;
-// Share of the panels' height: pressures, volume, flows.
-constexpr std::array<double, 3> kPanelShares{0.38, 0.29, 0.33};
+// Share of the panels' height: pressures, volume, flows, the ECG.
+constexpr std::array<double, 4> kPanelShares{0.33, 0.24, 0.27, 0.16};
 // Pressures and flows keep their zero line in view; the volume zooms in on its swing.
-constexpr std::array<bool, 3> kFromZero{true, false, true};
+constexpr std::array<bool, 4> kFromZero{true, false, true, true};
 constexpr int kMaxTiers = 2;
 
 int pad() { return 6 * kTextScale; }
@@ -143,15 +143,17 @@ viz::PlotSpec panelSpec(std::string yLabel, std::vector<viz::Series> curves,
   return spec;
 }
 
-// The three panels' curves, converted to mmHg, mL and mL/s.
-std::array<std::vector<viz::Series>, 3> panelCurves(const std::vector<CirculationSample>& beat) {
+// The four panels' curves, converted to mmHg, mL, mL/s and mV.
+std::array<std::vector<viz::Series>, 4> panelCurves(const std::vector<CirculationSample>& beat) {
   viz::Series aorta = plotSeries("aorta", viz::paletteColour(1));
   viz::Series ventricle = plotSeries("left ventricle", viz::paletteColour(0));
   viz::Series atrium = plotSeries("left atrium", viz::paletteColour(2));
   viz::Series volume = plotSeries("", viz::paletteColour(0));
   viz::Series mitral = plotSeries("mitral", viz::paletteColour(2));
   viz::Series aortic = plotSeries("aortic", viz::paletteColour(1));
+  viz::Series ecg = plotSeries("", viz::kBlack);
   for (const CirculationSample& s : beat) {
+    ecg.y.push_back(s.ecg);
     aorta.y.push_back(toMmHg(s.aorticPressure));
     ventricle.y.push_back(toMmHg(s.lvPressure));
     atrium.y.push_back(toMmHg(s.laPressure));
@@ -159,7 +161,7 @@ std::array<std::vector<viz::Series>, 3> panelCurves(const std::vector<Circulatio
     mitral.y.push_back(toMl(s.mitralFlow));
     aortic.y.push_back(toMl(s.aorticFlow));
   }
-  return {std::vector{aorta, ventricle, atrium}, std::vector{volume}, std::vector{mitral, aortic}};
+  return {std::vector{aorta, ventricle, atrium}, std::vector{volume}, std::vector{mitral, aortic}, std::vector{ecg}};
 }
 
 void validateBeat(const std::vector<CirculationSample>& beat) {
@@ -233,6 +235,23 @@ void drawPhaseBand(viz::Image& image, const WiggersLayout& layout) {
   }
 }
 
+// The heart sounds on the ECG panel: S1 where the isovolumic contraction begins (the mitral
+// valve closes), S2 where the isovolumic relaxation begins (the aortic valve closes), as
+// metrics.csv's heart_sound column has them (cardiac::heartSoundAt).
+void drawHeartSounds(viz::Image& image, const WiggersLayout& layout) {
+  const std::size_t ecg = layout.panels.size() - 1;
+  const viz::PlotFrame frame(layout.panels[ecg]);
+  const int s = kTextScale, top = layout.panelTops[ecg] + frame.area().y + pad() / 2;
+  for (const WiggersLayout::Phase& phase : layout.phases) {
+    const char* sound = phase.name == cardiac::heartPhaseName(cardiac::HeartPhase::IsovolumicContraction) ? "S1"
+                        : phase.name == cardiac::heartPhaseName(cardiac::HeartPhase::IsovolumicRelaxation) ? "S2"
+                                                                                                             : nullptr;
+    if (!sound) continue;
+    const int x = static_cast<int>(std::lround(frame.toPixel(phase.fromMs, 0.0).x));
+    image.drawText(x + pad() / 2, top, sound, s, viz::Rgb{150, 70, 20});
+  }
+}
+
 }  // namespace
 
 WiggersLayout wiggersLayout(const std::vector<CirculationSample>& beat, const std::string& title) {
@@ -247,10 +266,11 @@ WiggersLayout wiggersLayout(const std::vector<CirculationSample>& beat, const st
   std::vector<double> timeMs;
   for (const CirculationSample& s : beat) timeMs.push_back((s.time - layout.beatStart) * 1e3);
 
-  std::array<std::vector<viz::Series>, 3> curves = panelCurves(beat);
+  std::array<std::vector<viz::Series>, 4> curves = panelCurves(beat);
   layout.panels = {panelSpec("Pressure (mmHg)", std::move(curves[0]), timeMs),
                    panelSpec("LV volume (mL)", std::move(curves[1]), timeMs),
-                   panelSpec("Flow (mL/s)", std::move(curves[2]), timeMs)};
+                   panelSpec("Flow (mL/s)", std::move(curves[2]), timeMs),
+                   panelSpec("ECG (mV)", std::move(curves[3]), timeMs)};
   layout.panels.back().xLabel = "Time from the beat's start (ms)";
   layout.phases = namedPhases(beat, timeMs);
   // The names' tiers depend on the plot area's columns, the band's height on the tiers used:
@@ -275,6 +295,7 @@ viz::Image wiggersDiagramImage(const std::vector<CirculationSample>& beat, const
   image.drawText((layout.width - viz::Image::textWidth(title, titleScale)) / 2, 2 * pad(), title, titleScale,
                  viz::kBlack);
   drawPhaseBand(image, layout);
+  drawHeartSounds(image, layout);
   return image;
 }
 

@@ -183,7 +183,7 @@ void LessonPlayer::finishStep(const ViewerStatus& status, ViewerControls& contro
   m_measured = measuredFigures(status);
   if (!step().mark.empty()) m_marks[step().mark] = m_measured;
   m_played.clear();
-  const std::vector<cardiac::BeatSummary>& recent = status.pump.beats.recent;
+  const std::vector<cardiac::BeatSummary>& recent = status.pump.beats.played;
   for (std::size_t i = 1; i < recent.size(); ++i)
     if (recent[i].index > m_beatBase && recent[i - 1].index + 1 == recent[i].index)
       m_played.push_back({recent[i].index, 1e3 * recent[i - 1].duration,

@@ -80,6 +80,8 @@ void PumpReadout::record(double startTime, cardiac::Phase phase, double volume,
       m_settled = m_settled || beatSettles(m_settling, *m_last, previous);
       if (m_settled) m_recent.push_back(*m_last);
       if (m_recent.size() > kRecentBeats) m_recent.erase(m_recent.begin());
+      m_played.push_back(*m_last);
+      if (m_played.size() > kRecentBeats) m_played.erase(m_played.begin());
     }
     m_tracker = cardiac::BeatTracker(m_lastVolume, m_dt);
     m_currentEdv = m_lastVolume;
@@ -95,6 +97,7 @@ BeatReadings PumpReadout::readings() const {
   r.last = m_last;
   r.recent = m_recent;
   r.settled = m_settled;
+  r.played = m_played;
   r.beatsCompleted = m_completed;
   r.beating = m_beating;
   r.currentEdv = m_currentEdv;

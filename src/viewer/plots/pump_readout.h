@@ -80,6 +80,7 @@ struct BeatReadings {
   // `now` and `before` average. Empty while it settles.
   std::vector<cardiac::BeatSummary> recent;
   bool settled = false;  // a beat has settled
+  std::vector<cardiac::BeatSummary> played;  // the last complete beats, settled or not (a lesson's table)
   int beatsCompleted = 0;
   bool beating = false;     // a beat is in progress
   double currentEdv = 0;    // m^3, the beat in progress's end-diastolic volume
@@ -103,7 +104,7 @@ class PumpReadout {
  private:
   cardiac::BeatTracker m_tracker;  // the beat in progress (and, until the next starts, the last)
   std::optional<cardiac::BeatSummary> m_last;
-  std::vector<cardiac::BeatSummary> m_recent;
+  std::vector<cardiac::BeatSummary> m_recent, m_played;
   int m_completed = 0;
   SettlingRule m_settling;
   bool m_settled = false;

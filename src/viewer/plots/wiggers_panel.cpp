@@ -31,7 +31,7 @@ struct Panel {
   const char* unit;
   std::array<Trace, 3> traces;
   int count;
-  float share;  // of the three panels' height
+  float share;  // of the panels' height
   bool includeZero;
 };
 
@@ -42,21 +42,34 @@ double laMmHg(const CirculationSample& s) { return s.laPressure / kPascalPerMmHg
 double lvMl(const CirculationSample& s) { return s.lvVolume / kCubicMetresPerMl; }
 double mitralMlPerS(const CirculationSample& s) { return s.mitralFlow / kCubicMetresPerMl; }
 double aorticMlPerS(const CirculationSample& s) { return s.aorticFlow / kCubicMetresPerMl; }
+double ecgMv(const CirculationSample& s) { return s.ecg; }
 
 // The colours of the pump panel's plots (pump_panel.cpp) for the same quantities.
 constexpr ImU32 kRed = IM_COL32(215, 60, 40, 255), kBlue = IM_COL32(40, 110, 220, 255);
 constexpr ImU32 kBlack = IM_COL32(25, 25, 30, 255), kVolume = IM_COL32(170, 30, 45, 255);
-const std::array<Panel, 3> kPanels = {{
+const std::array<Panel, 4> kPanels = {{
     {"mmHg",
      {{{"Ao", aorticMmHg, kRed, 1.8f}, {"LV", lvMmHg, kBlack, 2.0f}, {"LA", laMmHg, kBlue, 1.8f}}},
      3,
-     0.46f,
+     0.39f,
      true},
-    {"mL", {{{"LV", lvMl, kVolume, 2.0f}}}, 1, 0.24f, false},
-    {"mL/s", {{{"mitral", mitralMlPerS, kBlue, 1.8f}, {"aortic", aorticMlPerS, kRed, 1.8f}}}, 2, 0.30f, true},
+    {"mL", {{{"LV", lvMl, kVolume, 2.0f}}}, 1, 0.20f, false},
+    {"mL/s", {{{"mitral", mitralMlPerS, kBlue, 1.8f}, {"aortic", aorticMlPerS, kRed, 1.8f}}}, 2, 0.26f, true},
+    {"mV", {{{"ECG", ecgMv, kBlack, 1.4f}}}, 1, 0.15f, true},
 }};
 
 constexpr std::size_t kFlowPanel = 2;  // its first trace is the mitral flow
+constexpr std::size_t kEcgPanel = 3;
+
+// The heart sounds on the ECG strip: S1 as the mitral valve closes, S2 as the aortic valve
+// closes (cardiac::heartSoundAt), left of their lines as the closing valves' names are.
+void drawHeartSounds(ImDrawList* draw, const ChartFrame& f, const ValveEvents& e, double start) {
+  for (const auto& [time, name] : {std::pair{e.mitralClose, "S1"}, std::pair{e.aorticClose, "S2"}}) {
+    if (!time) continue;
+    const float x = std::round(f.px((*time - start) * 1000));
+    draw->AddText(ImVec2(x - ImGui::CalcTextSize(name).x - 2, f.y0 + 1), IM_COL32(120, 60, 20, 255), name);
+  }
+}
 
 // The phases' tints, by CyclePhaseKind.
 constexpr std::array<ImU32, 4> kPhaseColours = {IM_COL32(255, 222, 170, 255), IM_COL32(255, 200, 205, 255),
@@ -65,9 +78,12 @@ ImU32 phaseColour(const CyclePhase& p) { return kPhaseColours[std::size_t(p.kind
 
 constexpr const char* kWiggersHelp =
     "One heartbeat, from the start of the ventricle's contraction to the next, on one time axis:\n"
+
     "  top: pressures in the aorta (Ao), the left ventricle (LV) and the left atrium (LA);\n"
     "  middle: the ventricle's volume;\n"
-    "  bottom: flow through the mitral valve (into the ventricle) and the aortic valve (out).\n"
+    "  below: flow through the mitral valve (into the ventricle) and the aortic valve (out);\n"
+    "  bottom: the ECG, P (the atrium's excitation), QRS (the ventricle's) just before it contracts,\n"
+    "  T as it relaxes, with the heart sounds S1 and S2 as the mitral and the aortic valve close.\n"
     "A valve opens when the pressure behind it exceeds the pressure ahead of it:\n"
     "  MC mitral closes (LV rises above LA), AO aortic opens (LV above Ao),\n"
     "  AC aortic closes (LV falls below Ao), MO mitral opens (LV below LA).\n"
@@ -264,6 +280,7 @@ void drawWiggersDiagram(const CirculationHistory& history, ImVec2 size) {
     panel.y1 = y + height * kPanels[i].share;
     panel = drawPanel(draw, panel, kPanels[i], beat, start, phases, i + 1 == kPanels.size());
     if (i == kFlowPanel) drawMitralWaves(draw, panel, beat, start, kPanels[i].traces[0]);
+    if (i == kEcgPanel) drawHeartSounds(draw, panel, events, start);
     y = panel.y1 + kGap;
   }
   draw->AddText(ImVec2(f.x1 + 5, panelsBottom + 2), kChartText, "ms");

@@ -69,3 +69,19 @@ TEST(HeartPhase, NamesKeysAndLeaks) {
 
 }  // namespace
 }  // namespace hs::cardiac
+
+namespace hs::cardiac {
+namespace {
+
+TEST(HeartPhase, TheSoundsComeAsTheValvesClose) {
+  EXPECT_EQ(heartSoundAt(HeartPhase::Filling, HeartPhase::IsovolumicContraction), HeartSound::S1);
+  EXPECT_EQ(heartSoundAt(HeartPhase::Filling, HeartPhase::Ejection), HeartSound::S1) << "no isovolumic phase";
+  EXPECT_EQ(heartSoundAt(HeartPhase::Ejection, HeartPhase::IsovolumicRelaxation), HeartSound::S2);
+  EXPECT_EQ(heartSoundAt(HeartPhase::IsovolumicContraction, HeartPhase::IsovolumicContraction), HeartSound::None);
+  EXPECT_EQ(heartSoundAt(HeartPhase::IsovolumicRelaxation, HeartPhase::Filling), HeartSound::None);
+  EXPECT_EQ(std::string(heartSoundName(HeartSound::S2)), "S2");
+  EXPECT_EQ(std::string(heartSoundName(HeartSound::None)), "");
+}
+
+}  // namespace
+}  // namespace hs::cardiac

@@ -216,7 +216,7 @@ TEST(CirculationPlots, CompareModeGivesEachLoopItsColourAndLegendEntry) {
 TEST(CirculationPlots, ValveLinesStandAtTheEventTimesInEveryPanel) {
   const WiggersLayout layout = wiggersLayout(syntheticBeat(), "Wiggers");
   const viz::Image image = wiggersDiagramImage(syntheticBeat(), "Wiggers");
-  ASSERT_EQ(layout.panels.size(), 3u);
+  ASSERT_EQ(layout.panels.size(), 4u) << "pressures, volume, flows, the ECG";
   EXPECT_EQ(layout.eventTimesMs,
             (std::vector<double>{kMitralCloses, kAorticOpens, kAorticCloses, kMitralOpens}));
   const viz::Rect first = viz::PlotFrame(layout.panels[0]).area();

@@ -219,7 +219,7 @@ TEST(LessonPlayer, AStepEndsOnASettledBeatPausedAndKeepsTheBeatsItPlayed) {
   status.pump.beats.beatsCompleted = 8;
   status.pump.beats.settled = true;
   status.pump.scale = volumeScaleFor(120e-6);
-  status.pump.beats.recent = {playedBeat(5, 0.83, 120, 50), playedBeat(6, 0.55, 118, 48),
+  status.pump.beats.played = {playedBeat(5, 0.83, 120, 50), playedBeat(6, 0.55, 118, 48),
                               playedBeat(7, 1.10, 100, 45), playedBeat(8, 0.70, 125, 48)};
   frame(player, status, controls);
   ASSERT_EQ(player.stage(), StepStage::Done);
