@@ -1,5 +1,7 @@
 #include "cardiac/circulation/heart_phase.h"
 
+#include <cstddef>
+
 namespace hs::cardiac {
 
 HeartPhase heartPhaseAfter(HeartPhase previous, const PhaseSignals& now) {
@@ -22,56 +24,39 @@ HeartPhase heartPhaseAfter(HeartPhase previous, const PhaseSignals& now) {
   return now.contracting ? HeartPhase::IsovolumicContraction : HeartPhase::IsovolumicRelaxation;
 }
 
-const char* heartPhaseName(HeartPhase phase) {
-  switch (phase) {
-    case HeartPhase::IsovolumicContraction: return "isovolumic contraction";
-    case HeartPhase::Ejection: return "ejection";
-    case HeartPhase::IsovolumicRelaxation: return "isovolumic relaxation";
-    case HeartPhase::Filling: return "filling";
-    case HeartPhase::None: break;
-  }
-  return "";
-}
+namespace {
 
-const char* heartPhaseShortName(HeartPhase phase) {
-  switch (phase) {
-    case HeartPhase::IsovolumicContraction: return "IVC";
-    case HeartPhase::Ejection: return "ej.";
-    case HeartPhase::IsovolumicRelaxation: return "IVR";
-    case HeartPhase::Filling: return "fill.";
-    case HeartPhase::None: break;
-  }
-  return "";
-}
+// Every name of a phase, in HeartPhase's order.
+struct PhaseNames {
+  const char* name;
+  const char* shortName;
+  const char* key;
+  const char* explanation;
+};
+constexpr PhaseNames kPhaseNames[] = {
+    {"", "", "none",
+     "This scenario has no valves: only the wall's own clock (contracting or relaxing) is known."},
+    {"isovolumic contraction", "IVC", "isovolumic_contraction",
+     "The ventricle contracts with both valves shut: its pressure climbs, its volume stays, until it exceeds "
+     "the aorta's and the aortic valve opens."},
+    {"ejection", "ej.", "ejection",
+     "The aortic valve is open: the contracting ventricle pushes blood into the aorta and its volume falls."},
+    {"isovolumic relaxation", "IVR", "isovolumic_relaxation",
+     "The aortic valve has shut and the mitral valve is not yet open: the ventricle relaxes, its pressure "
+     "falls, its volume stays."},
+    {"filling", "fill.", "filling",
+     "The mitral valve is open: blood flows in from the atrium, first as the ventricle relaxes (E wave), then "
+     "pushed by the atrium's contraction (A wave, the atrial kick)."},
+};
 
-const char* heartPhaseKey(HeartPhase phase) {
-  switch (phase) {
-    case HeartPhase::IsovolumicContraction: return "isovolumic_contraction";
-    case HeartPhase::Ejection: return "ejection";
-    case HeartPhase::IsovolumicRelaxation: return "isovolumic_relaxation";
-    case HeartPhase::Filling: return "filling";
-    case HeartPhase::None: break;
-  }
-  return "none";
-}
+const PhaseNames& names(HeartPhase phase) { return kPhaseNames[std::size_t(phase)]; }
 
-const char* heartPhaseExplanation(HeartPhase phase) {
-  switch (phase) {
-    case HeartPhase::IsovolumicContraction:
-      return "The ventricle contracts with both valves shut: its pressure climbs, its volume stays, until it "
-             "exceeds the aorta's and the aortic valve opens.";
-    case HeartPhase::Ejection:
-      return "The aortic valve is open: the contracting ventricle pushes blood into the aorta and its volume falls.";
-    case HeartPhase::IsovolumicRelaxation:
-      return "The aortic valve has shut and the mitral valve is not yet open: the ventricle relaxes, its "
-             "pressure falls, its volume stays.";
-    case HeartPhase::Filling:
-      return "The mitral valve is open: blood flows in from the atrium, first as the ventricle relaxes (E "
-             "wave), then pushed by the atrium's contraction (A wave, the atrial kick).";
-    case HeartPhase::None: break;
-  }
-  return "This scenario has no valves: only the wall's own clock (contracting or relaxing) is known.";
-}
+}  // namespace
+
+const char* heartPhaseName(HeartPhase phase) { return names(phase).name; }
+const char* heartPhaseShortName(HeartPhase phase) { return names(phase).shortName; }
+const char* heartPhaseKey(HeartPhase phase) { return names(phase).key; }
+const char* heartPhaseExplanation(HeartPhase phase) { return names(phase).explanation; }
 
 bool heartPhaseLeaks(HeartPhase phase, double mitralBackward, double aorticBackward) {
   const bool isovolumic = phase == HeartPhase::IsovolumicContraction || phase == HeartPhase::IsovolumicRelaxation;

@@ -9,20 +9,14 @@
 
 #include "cardiac/circulation/clinical_units.h"
 #include "io/scenario/scenario_file.h"
+#include "runner_wait.h"
 #include "viewer/app/simulation_runner.h"
 #include "viewer/plots/circulation_history.h"
 
 namespace hs::viewer {
 namespace {
 
-bool waitFor(SimulationRunner& runner, const std::function<bool(SimulationState&)>& done) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(300);
-  while (std::chrono::steady_clock::now() < end) {
-    if (runner.access(done)) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  return false;
-}
+using test_support::waitFor;
 
 // The normal heart with the lumped circulation and no blood: the wall alone steps quickly.
 cardiac::Scenario lumpedWall() {

@@ -12,20 +12,16 @@
 #include <vector>
 
 #include "io/scenario/scenario_file.h"
+#include "runner_wait.h"
 #include "viewer/app/simulation_runner.h"
 #include "viewer/plots/plot_history.h"
 
 namespace hs::viewer {
 namespace {
 
-// Polls until `done` (read under access()) or a generous time-out: the machine may be busy.
+// A shorter time-out than the default: these runs are small.
 bool waitFor(SimulationRunner& runner, const std::function<bool(SimulationState&)>& done) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  while (std::chrono::steady_clock::now() < end) {
-    if (runner.access(done)) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  return false;
+  return test_support::waitFor(runner, done, 120);
 }
 
 TEST(ViewerSimulationRunner, StepsInItsThreadAndRecordsThePump) {
