@@ -62,12 +62,12 @@ constexpr std::size_t kFlowPanel = 2;  // its first trace is the mitral flow
 constexpr std::size_t kEcgPanel = 3;
 
 // The heart sounds on the ECG strip: S1 as the mitral valve closes, S2 as the aortic valve
-// closes (cardiac::heartSoundAt), left of their lines as the closing valves' names are.
+// closes (cardiac::heartSoundAt), right of their lines (S1 stands at the beat's start).
 void drawHeartSounds(ImDrawList* draw, const ChartFrame& f, const ValveEvents& e, double start) {
   for (const auto& [time, name] : {std::pair{e.mitralClose, "S1"}, std::pair{e.aorticClose, "S2"}}) {
     if (!time) continue;
     const float x = std::round(f.px((*time - start) * 1000));
-    draw->AddText(ImVec2(x - ImGui::CalcTextSize(name).x - 2, f.y0 + 1), IM_COL32(120, 60, 20, 255), name);
+    draw->AddText(ImVec2(x + 3, f.y0 + 1), IM_COL32(120, 60, 20, 255), name);
   }
 }
 
