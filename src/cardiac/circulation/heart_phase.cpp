@@ -58,9 +58,9 @@ const char* heartPhaseShortName(HeartPhase phase) { return names(phase).shortNam
 const char* heartPhaseKey(HeartPhase phase) { return names(phase).key; }
 const char* heartPhaseExplanation(HeartPhase phase) { return names(phase).explanation; }
 
-bool heartPhaseLeaks(HeartPhase phase, double mitralBackward, double aorticBackward) {
+bool heartPhaseLeaks(HeartPhase phase, bool mitralLeak, bool aorticLeak) {
   const bool isovolumic = phase == HeartPhase::IsovolumicContraction || phase == HeartPhase::IsovolumicRelaxation;
-  return isovolumic && (mitralBackward > 0 || aorticBackward > 0);
+  return isovolumic && (mitralLeak || aorticLeak);
 }
 
 HeartSound heartSoundAt(HeartPhase previous, HeartPhase now) {
@@ -85,7 +85,7 @@ std::string heartPhaseLabel(HeartPhase phase, const PhaseDetail& d) {
                              : "the wall relaxes (no valves: only the wall's own clock)";
   std::string label = heartPhaseName(phase);
   if (phase == HeartPhase::Filling && d.atrialKick) label += ": atrial kick (A wave)";
-  if (heartPhaseLeaks(phase, d.mitralLeak ? 1.0 : 0.0, d.aorticLeak ? 1.0 : 0.0))
+  if (heartPhaseLeaks(phase, d.mitralLeak, d.aorticLeak))
     label += d.mitralLeak ? ": not isovolumic, blood leaks back into the atrium"
                           : ": not isovolumic, blood leaks back from the aorta";
   return label;

@@ -57,8 +57,8 @@ const char* heartPhaseKey(HeartPhase phase);
 // A sentence for a student: what the ventricle and its valves do in the phase.
 const char* heartPhaseExplanation(HeartPhase phase);
 // True for an isovolumic phase in which blood still leaves or enters through a shut valve
-// (backward flow through it in the step, m^3): the volume is then not constant.
-bool heartPhaseLeaks(HeartPhase phase, double mitralBackward, double aorticBackward);
+// (backward flow through it in the step): the volume is then not constant.
+bool heartPhaseLeaks(HeartPhase phase, bool mitralLeak, bool aorticLeak);
 
 // The heart sounds, where the phase says the valves close: S1 ("lub") as the ventricle's
 // contraction shuts the mitral valve (the isovolumic contraction begins, or ejection straight

@@ -62,9 +62,9 @@ TEST(HeartPhase, NamesKeysAndLeaks) {
   EXPECT_EQ(std::string(heartPhaseKey(HeartPhase::IsovolumicRelaxation)), "isovolumic_relaxation");
   EXPECT_EQ(std::string(heartPhaseKey(HeartPhase::None)), "none");
   EXPECT_EQ(std::string(heartPhaseShortName(HeartPhase::IsovolumicContraction)), "IVC");
-  EXPECT_TRUE(heartPhaseLeaks(HeartPhase::IsovolumicContraction, 1e-6, 0)) << "mitral regurgitation";
-  EXPECT_FALSE(heartPhaseLeaks(HeartPhase::IsovolumicContraction, 0, 0));
-  EXPECT_FALSE(heartPhaseLeaks(HeartPhase::Ejection, 1e-6, 0)) << "not an isovolumic phase";
+  EXPECT_TRUE(heartPhaseLeaks(HeartPhase::IsovolumicContraction, true, false)) << "mitral regurgitation";
+  EXPECT_FALSE(heartPhaseLeaks(HeartPhase::IsovolumicContraction, false, false));
+  EXPECT_FALSE(heartPhaseLeaks(HeartPhase::Ejection, true, false)) << "not an isovolumic phase";
 }
 
 }  // namespace
