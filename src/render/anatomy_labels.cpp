@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/label_layout.h"
+
 namespace hs::render {
 namespace {
 
@@ -135,56 +137,24 @@ void drawLabels(viz::Image& image, const std::vector<SceneLabel>& labels, const 
                 const std::vector<viz::Rect>& avoid) {
   const int w = image.width(), h = image.height();
   const int scale = std::max(1, std::min(w, h) / 300);
-  const float reach = 22.0f * float(scale);
-  const int pad = 2 * scale, textHeight = viz::Image::capHeight(scale);
-  // Boxes on the image so far (the key, the names drawn): a name that would cover one moves a
-  // line down, then up, then two lines, and so on, staying inside the image.
-  std::vector<viz::Rect> placed = avoid;
-  auto overlaps = [&](const viz::Rect& r) {
-    for (const viz::Rect& q : placed)
-      if (r.x < q.x + q.width && q.x < r.x + r.width && r.y < q.y + q.height && q.y < r.y + r.height) return true;
-    return false;
-  };
-  // The heart's column on the image: the anchors' mean across. A name goes out from it, away from
-  // the heart; an anchor on the column (a side view, where the atrium and the root lie one behind
-  // the other) takes the side it has seen from the front, so the names split into two columns
-  // instead of stacking in one.
-  float column = 0;
-  int onScreen = 0;
+  const LabelSpacing spacing{22.0f * float(scale), 2.0f * float(scale)};
+  std::vector<std::pair<float, float>> sizes;
   for (const SceneLabel& label : labels)
-    if (const ProjectedLabel p = projectLabel(label, camera, w, h); p.onScreen) column += p.x, ++onScreen;
-  column = onScreen > 0 ? column / float(onScreen) : float(w) / 2;
-  const float onColumn = 0.06f * float(w);
-  for (const SceneLabel& label : labels) {
-    const ProjectedLabel p = projectLabel(label, camera, w, h);
-    if (!p.onScreen) continue;
+    sizes.emplace_back(float(viz::Image::textWidth(label.text, scale)), float(viz::Image::capHeight(scale)));
+  std::vector<LabelBox> keep;
+  for (const viz::Rect& r : avoid) keep.push_back({float(r.x), float(r.y), float(r.width), float(r.height)});
+  const LabelBox bounds{0, 0, float(w), float(h)};
+  for (const PlacedLabel& placed : layoutLabels(labels, sizes, camera, w, h, bounds, spacing, keep)) {
+    const ProjectedLabel& p = placed.at;
     if (p.hasArrow) drawArrow(image, p.arrowFromX, p.arrowFromY, p.arrowToX, p.arrowToY, scale);
-    const int textWidth = viz::Image::textWidth(label.text, scale);
-    float ex = p.x, ey = p.y + reach / 2;
-    int tx = 0, ty = 0;
-    if (label.side == LabelSide::Below) {
-      tx = int(ex) - textWidth / 2, ty = int(ey) + pad;
-    } else {
-      const bool left = std::abs(p.x - column) < onColumn ? label.side == LabelSide::Left : p.x < column;
-      ex = p.x + (left ? -reach : reach), ey = p.y - reach / 2;
-      tx = left ? int(ex) - textWidth - pad : int(ex) + pad, ty = int(ey) - textHeight / 2;
-    }
-    tx = std::clamp(tx, pad, std::max(pad, w - textWidth - pad));
-    ty = std::clamp(ty, pad, std::max(pad, h - textHeight - pad));
-    viz::Rect box{tx - pad, ty - pad, textWidth + 2 * pad, textHeight + 2 * pad};
-    const int first = box.y, step = box.height + pad;
-    for (int tries = 1; tries <= 24 && overlaps(box); ++tries) {
-      const int lines = (tries + 1) / 2 * (tries % 2 == 1 ? 1 : -1);  // +1, -1, +2, -2, ...
-      box.y = std::clamp(first + lines * step, 0, std::max(0, h - box.height));
-    }
-    const float shift = float(box.y + pad - ty);
-    ty = box.y + pad;
-    placed.push_back(box);
-    image.drawLine(p.x, p.y, ex, ey + shift, kInk, 1.5 * scale);
+    const viz::Rect box{int(std::lround(placed.box.x)), int(std::lround(placed.box.y)),
+                        int(std::lround(placed.box.width)), int(std::lround(placed.box.height))};
+    image.drawLine(p.x, p.y, placed.leaderX, placed.leaderY, kInk, 1.5 * scale);
     image.drawCircle(p.x, p.y, 2.5 * scale, kInk);
     image.fillRect(box, kPaper);
     image.strokeRect(box, {150, 150, 160});
-    image.drawText(tx, ty, label.text, scale, kInk);
+    const int pad = int(spacing.pad);
+    image.drawText(box.x + pad, box.y + pad, labels[placed.label].text, scale, kInk);
   }
 }
 

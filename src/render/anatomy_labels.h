@@ -48,9 +48,8 @@ struct ProjectedLabel {
 ProjectedLabel projectLabel(const SceneLabel& label, const Camera& camera, int width, int height);
 
 // The labels drawn into a finished image seen by `camera`: a dot at each anchor, a leader line
-// out to a pale box with the name (on the side away from the heart's column, the anchors' mean
-// across, so it points outward from the heart in every view; an anchor on the column takes its
-// `side`), the flow arrows in white with a dark rim.
+// out to a pale box with the name (placed by label_layout.h: outward from the heart, none on
+// another), the flow arrows in white with a dark rim.
 // `avoid`: boxes already on the image (the colour key) that no name may cover.
 void drawLabels(viz::Image& image, const std::vector<SceneLabel>& labels, const Camera& camera,
                 const std::vector<viz::Rect>& avoid = {});

@@ -32,42 +32,32 @@ void arrow(ImDrawList& draw, ImVec2 from, ImVec2 to) {
 }  // namespace
 
 void drawSceneLabels(const std::vector<SceneLabel>& labels, const render::Camera& camera, int width, int height,
-                     const SceneArea& area) {
+                     const SceneArea& area, const std::vector<render::LabelBox>& avoid) {
   ImDrawList& draw = *ImGui::GetBackgroundDrawList();
-  const float top = 0, bottom = float(height) - area.strip;
-  draw.PushClipRect(ImVec2(area.left, top), ImVec2(area.right, bottom));
-  constexpr float kReach = 34, kPad = 3;  // the leader line's length and the text box's margin (px)
-  for (const SceneLabel& label : labels) {
-    const ProjectedLabel p = projectLabel(label, camera, width, height);
-    if (!p.onScreen) continue;
+  const float bottom = float(height) - area.strip;
+  draw.PushClipRect(ImVec2(area.left, 0), ImVec2(area.right, bottom));
+  constexpr float kEdge = 9;  // px: the names' boxes stay clear of the windows beside the scene
+  const render::LabelBox bounds{area.left + kEdge, 0, area.right - area.left - 2 * kEdge, bottom};
+  for (const render::PlacedLabel& placed :
+       render::layoutLabels(labels, labelTextSizes(labels), camera, width, height, bounds, kLabelSpacing, avoid)) {
+    const ProjectedLabel& p = placed.at;
     if (p.hasArrow) arrow(draw, ImVec2(p.arrowFromX, p.arrowFromY), ImVec2(p.arrowToX, p.arrowToY));
-    const ImVec2 size = ImGui::CalcTextSize(label.text.c_str());
-    ImVec2 end(p.x, p.y), corner;
-    switch (label.side) {
-      case LabelSide::Left:
-        end = ImVec2(p.x - kReach, p.y - kReach / 2);
-        corner = ImVec2(end.x - size.x - kPad, end.y - size.y / 2);
-        break;
-      case LabelSide::Right:
-        end = ImVec2(p.x + kReach, p.y - kReach / 2);
-        corner = ImVec2(end.x + kPad, end.y - size.y / 2);
-        break;
-      case LabelSide::Below:
-        end = ImVec2(p.x, p.y + kReach / 2);
-        corner = ImVec2(end.x - size.x / 2, end.y + kPad);
-        break;
-    }
-    // Inside the scene, whatever the camera does.
-    constexpr float kEdge = 12;  // clear of the windows beside the scene
-    corner.x = std::clamp(corner.x, area.left + kEdge, std::max(area.left + kEdge, area.right - size.x - kEdge));
-    corner.y = std::clamp(corner.y, top + kPad, std::max(top + kPad, bottom - size.y - kPad));
-    draw.AddLine(ImVec2(p.x, p.y), end, kInk, 1.5f);
+    const render::LabelBox& box = placed.box;
+    draw.AddLine(ImVec2(p.x, p.y), ImVec2(placed.leaderX, placed.leaderY), kInk, 1.5f);
     draw.AddCircleFilled(ImVec2(p.x, p.y), 3, kInk);
-    draw.AddRectFilled(ImVec2(corner.x - kPad, corner.y - kPad),
-                       ImVec2(corner.x + size.x + kPad, corner.y + size.y + kPad), kPaper, 3);
-    draw.AddText(corner, kInk, label.text.c_str());
+    draw.AddRectFilled(ImVec2(box.x, box.y), ImVec2(box.right(), box.bottom()), kPaper, 3);
+    draw.AddText(ImVec2(box.x + kLabelSpacing.pad, box.y + kLabelSpacing.pad), kInk, labels[placed.label].text.c_str());
   }
   draw.PopClipRect();
+}
+
+std::vector<std::pair<float, float>> labelTextSizes(const std::vector<SceneLabel>& labels) {
+  std::vector<std::pair<float, float>> sizes;
+  for (const SceneLabel& label : labels) {
+    const ImVec2 size = ImGui::CalcTextSize(label.text.c_str());
+    sizes.emplace_back(size.x, size.y);
+  }
+  return sizes;
 }
 
 void drawToasts(const std::vector<Toast>& toasts, const SceneArea& area) {

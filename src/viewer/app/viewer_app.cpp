@@ -139,11 +139,6 @@ bool ViewerApp::restart(const std::string& change) {
   return true;
 }
 
-float ViewerApp::lessonWidth(int windowWidth) const {
-  if (!m_lesson || m_lesson->closed()) return 0;
-  return lessonPanelWidth(float(windowWidth) - kPanelWidth - rightPanelWidth());
-}
-
 float ViewerApp::rightPanelWidth() const {
   int w = 0, h = 0;
   glfwGetWindowSize(m_window.handle, &w, &h);
@@ -159,7 +154,7 @@ void ViewerApp::resetCamera(render::View view) {
   int w = 0, h = 0;
   glfwGetWindowSize(m_window.handle, &w, &h);
   m_framedStrip = stripHeight(h);
-  frameView(*m_camera, view, {kPanelWidth + lessonWidth(w), float(w) - rightPanelWidth(), m_framedStrip}, w, h);
+  frameView(*m_camera, view, {kPanelWidth, float(w) - rightPanelWidth(), m_framedStrip}, w, h);
 }
 
 void ViewerApp::followStrip(int windowHeight) {

@@ -22,6 +22,7 @@
 #include "viewer/app/scene_framing.h"
 #include "viewer/app/scene_labels.h"
 #include "viewer/app/scene_overlays.h"
+#include "viewer/app/scene_windows.h"
 #include "viewer/app/simulation_runner.h"
 #include "viewer/app/toasts.h"
 #include "viewer/app/viewer_app.h"
@@ -112,7 +113,6 @@ class ViewerApp {
   bool restart(const std::string& change = "");
 
   // The lesson window's width while it is shown: the heart is framed to its right.
-  float lessonWidth(int windowWidth) const;
 
   // The pump panel's width, when it is shown: with a heart, in a window wide enough to keep a
   // scene of kMinSceneWidth beside both panels.

@@ -153,24 +153,17 @@ void ViewerApp::drawFrame(const std::string& captureTo) {
   drawControlPanel(m_controls, m_status, m_scenarios, h);
   if (rightPanelWidth() > 0) drawPumpPanel(m_controls.pump, m_status.pump, m_history, m_runs, w, h);
   followStrip(h);
-  // Side by side at the bottom of the scene, or, where the scene is too narrow for both (a
-  // lesson beside it), the status corner above the colour key.
-  const float sceneLeft = kPanelWidth + lessonWidth(w), sceneRight = float(w) - rightPanelWidth();
-  const float keyTop = drawColourKey(m_status, sceneLeft, float(h) - stripHeight(h));
-  constexpr float kBothFit = 560;  // px: the key (260) and the status corner (about 230) with margins
-  drawStatusOverlay(m_status, sceneRight, sceneRight - sceneLeft < kBothFit ? keyTop - 4 : float(h) - stripHeight(h));
   if (m_controls.showCirculation)
     drawCirculationPanel(m_status.circulation, m_circulation, kPanelWidth, float(w) - rightPanelWidth(), h,
                          m_runs.previousLoop());
   drawCompareWindow(m_controls.pump.showCompare, m_runs, m_history, m_circulation, m_status.pump.axes);
-  const SceneArea area{kPanelWidth + lessonWidth(w), float(w) - rightPanelWidth(), stripHeight(h)};
-  drawSceneLabels(m_labels, m_camera->camera(), w, h, area);
+  const SceneArea area{kPanelWidth, float(w) - rightPanelWidth(), stripHeight(h)};
+  const std::vector<render::LabelBox> overlays = drawSceneWindows(m_status, m_lesson.get(), m_lessonRequests, area, h);
+  drawSceneLabels(m_labels, m_camera->camera(), w, h, area, overlays);
   postMessage();
   drawToasts(m_toasts.visible(glfwGetTime()), area);
   drawHelpWindow(m_controls.showHelp, m_controls.helpPage, w, h);
   if (m_status.hasHeart) drawBrushOutline(m_controls.region);
-  if (m_lesson)
-    drawLessonPanel(*m_lesson, m_lessonRequests, kPanelWidth, 0, lessonWidth(w), float(h) - stripHeight(h));
   ImGui::Render();
 
   if (fbw > 0 && fbh > 0) {

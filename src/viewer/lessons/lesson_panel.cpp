@@ -28,13 +28,27 @@ void wrappedColoured(const ImVec4& colour, const std::string& text) {
   ImGui::PopStyleColor();
 }
 
+// A button the width of the window whose label wraps onto as many lines as it needs (an ImGui
+// button cuts its label at its edge).
+bool wrappedButton(const std::string& id, const std::string& label) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float width = ImGui::GetContentRegionAvail().x, wrap = width - 2 * style.FramePadding.x;
+  const float textHeight = ImGui::CalcTextSize(label.c_str(), nullptr, false, wrap).y;
+  const ImVec2 corner = ImGui::GetCursorScreenPos();
+  const bool pressed = ImGui::Button(("##" + id).c_str(), ImVec2(width, textHeight + 2 * style.FramePadding.y));
+  ImGui::GetWindowDrawList()->AddText(ImGui::GetFont(), ImGui::GetFontSize(),
+                                      ImVec2(corner.x + style.FramePadding.x, corner.y + style.FramePadding.y),
+                                      ImGui::GetColorU32(ImGuiCol_Text), label.c_str(), nullptr, wrap);
+  return pressed;
+}
+
 // The choices as buttons the width of the window.
 void predictionButtons(const LessonPredict& predict, LessonRequests& requests) {
   wrappedColoured(kTitleColour, "Predict: " + predict.question);
   ImGui::Spacing();
   for (int i = 0; i < int(predict.choices.size()); ++i) {
     const std::string label = std::to_string(i + 1) + ". " + predict.choices[std::size_t(i)];
-    if (ImGui::Button(label.c_str(), ImVec2(-1, 0))) requests.answer = i;
+    if (wrappedButton("choice" + std::to_string(i), label)) requests.answer = i;
   }
   ImGui::TextDisabled("The simulation waits for your answer.");
 }
@@ -106,7 +120,8 @@ void stepBody(const LessonPlayer& player, LessonRequests& requests) {
       return;
     case StepStage::Playing: {
       if (step.predict && player.chosen())
-        ImGui::TextDisabled("Your prediction: %s", step.predict->choices[std::size_t(*player.chosen())].c_str());
+        wrappedColoured(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled),
+                        "Your prediction: " + step.predict->choices[std::size_t(*player.chosen())]);
       const std::string progress =
           "beat " + std::to_string(std::min(player.beatsPlayed() + 1, step.beats)) + " of " + std::to_string(step.beats);
       ImGui::ProgressBar(float(player.beatsPlayed()) / float(std::max(step.beats, 1)), ImVec2(-1, 0),
@@ -138,8 +153,9 @@ void navigation(const LessonPlayer& player, LessonRequests& requests) {
   if (ImGui::Button(last ? "Finish" : "Next >")) requests.next = true;
   ImGui::EndDisabled();
   ImGui::SameLine();
-  if (ImGui::SmallButton("close")) requests.close = true;
-  tooltip("Hide the lesson; the viewer goes on as it is");
+  if (ImGui::SmallButton("hide")) requests.close = true;
+  tooltip("Hide the lesson to reach the control panel under it; the viewer goes on as it is, and a button at the "
+          "scene's top left shows the lesson again");
   if (!player.finished()) {
     ImGui::SameLine();
     ImGui::TextDisabled("step %d of %d", player.stepIndex() + 1, player.stepCount());
@@ -149,25 +165,35 @@ void navigation(const LessonPlayer& player, LessonRequests& requests) {
 
 }  // namespace
 
-float lessonPanelWidth(float sceneWidth) { return std::clamp(0.36f * sceneWidth, 280.0f, 440.0f); }
-
-void drawLessonPanel(const LessonPlayer& player, LessonRequests& requests, float left, float top, float width,
-                     float maxHeight) {
-  if (player.closed()) return;
-  constexpr float kMargin = 10;
-  ImGui::SetNextWindowPos(ImVec2(left + kMargin, top + kMargin), ImGuiCond_Always);
-  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0), ImVec2(width, std::max(120.0f, maxHeight - 2 * kMargin)));
-  ImGui::SetNextWindowBgAlpha(0.82f);
+void drawLessonPanel(const LessonPlayer& player, LessonRequests& requests, float left, float width,
+                     int windowHeight) {
+  if (player.closed()) {
+    // Hidden: a button at the scene's top left corner brings it back where it was.
+    ImGui::SetNextWindowPos(ImVec2(left + width + 10, 10), ImGuiCond_Always);
+    ImGui::Begin("##lesson hidden", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+    const std::string show = "Lesson: " + player.lesson().title + " (show)";
+    if (ImGui::Button(show.c_str())) requests.reopen = true;
+    tooltip("Show the lesson again, at the step where it was");
+    ImGui::End();
+    return;
+  }
+  // Over the control panel, the whole height: the scene keeps its width for the heart, and the
+  // longest step's text fits without scrolling on a 768-pixel screen.
+  ImGui::SetNextWindowPos(ImVec2(left, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(width, float(windowHeight)), ImGuiCond_Always);
   const std::string title = "Lesson: " + player.lesson().title + "###lesson";
   ImGui::Begin(title.c_str(), nullptr,
-               ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
-                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoSavedSettings);
   navigation(player, requests);
   if (player.finished()) {
     wrappedColoured(kTitleColour, "End of the lesson.");
     if (player.answered() > 0)
       ImGui::Text("Predictions right: %d of %d", player.rightAnswers(), player.answered());
-    wrapped("The viewer goes on: change anything in the panel and watch what follows.");
+    wrapped("The viewer goes on: hide the lesson to reach the control panel, change anything there and watch "
+            "what follows.");
   } else {
     stepBody(player, requests);
   }

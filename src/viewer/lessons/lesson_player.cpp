@@ -27,6 +27,7 @@ void LessonPlayer::frame(LessonRequests& requests, const ViewerStatus& status,
     enter(0, false, scenarios);
   }
   if (requests.close) m_closed = true;
+  if (requests.reopen) m_closed = false;
   if (requests.back && m_finished)
     m_finished = false;  // back to the last step's result
   else if (requests.back && canGoBack())

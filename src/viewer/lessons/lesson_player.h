@@ -37,7 +37,8 @@ enum class StepStage {
 struct LessonRequests {
   int answer = -1;  // a choice was clicked
   bool next = false, back = false;
-  bool close = false;  // hide the lesson window
+  bool close = false;   // hide the lesson window
+  bool reopen = false;  // show it again
 };
 
 // One beat a step played, for the table of a rhythm that varies: the interval before it (the

@@ -289,7 +289,10 @@ void plots(PumpControls& c, const PumpStatus& s, const PlotHistory& history, con
   std::span<const PumpSample> before;
   if (previous && runs.comparable() && !previous->beatCurve.empty()) {
     before = previous->beatCurve;
-    ImGui::TextColored(ImVec4(0.45f, 0.45f, 0.45f, 1), "grey: before (%s)", previous->label.c_str());
+    // Wrapped: the run's label names what changed, as long as that is.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.45f, 0.45f, 0.45f, 1));
+    ImGui::TextWrapped("grey: before (%s)", previous->label.c_str());
+    ImGui::PopStyleColor();
     tooltip("The last beat of the run before the restart, laid under each beat of this run from its start");
   }
   // The charts share what is left of the panel's height.

@@ -22,6 +22,11 @@ void sectionTitle(const char* title) {
 ImU32 colourU32(const render::Vec3f& c) { return ImGui::GetColorU32(ImVec4(c.x(), c.y(), c.z(), 1)); }
 
 // The blood colour scale as a horizontal bar, 0 on the left, top on the right.
+OverlayBox currentWindowBox() {
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  return {pos.x, pos.y, size.x, size.y};
+}
+
 void scaleLegend(const char* title, double speedMax, const char* unit) {
   ImGui::TextUnformatted(title);
   const float width = ImGui::GetContentRegionAvail().x, height = 14;
@@ -46,7 +51,9 @@ void scaleLegend(const char* title, double speedMax, const char* unit) {
   ImGui::TextUnformatted(mid);
   ImGui::SameLine(width - ImGui::CalcTextSize(top).x + ImGui::GetStyle().WindowPadding.x);
   ImGui::TextUnformatted(top);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Blue = 0, yellow = %g %s or more", speedMax, unit);
+  char key[96];
+  std::snprintf(key, sizeof key, "Blue = 0, yellow = %g %s or more", speedMax, unit);
+  tooltip(key);
 }
 
 // Blood coloured by where it started: one swatch per origin.
@@ -261,8 +268,8 @@ void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
   endSidePanel();
 }
 
-float drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge) {
-  if (!status.hasHeart && !status.hasBlood) return bottomEdge;
+OverlayBox drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge, bool folded) {
+  if (!status.hasHeart && !status.hasBlood) return {leftEdge, bottomEdge, 0, 0};
   constexpr float kMargin = 10, kWidth = 260;
   ImGui::SetNextWindowPos(ImVec2(leftEdge + kMargin, bottomEdge - kMargin), ImGuiCond_Always,
                           ImVec2(0, 1));
@@ -272,10 +279,13 @@ float drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge
   ImGui::Begin("colour key", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
-  if (status.hasHeart) {
+  // Folded, the wall's colours give way to the blood's scale (or, without blood, keep their first line).
+  if (status.hasHeart && !(folded && status.hasBlood)) {
     ImGui::TextColored(ImVec4(0.85f, 0.3f, 0.32f, 1), "red");
     ImGui::SameLine();
     ImGui::TextUnformatted("myocardium, dark red: cut face");
+  }
+  if (status.hasHeart && !folded) {
     const render::Vec3f beating = render::beatingColour(render::regionColour(cardiac::Region::Myocardium));
     ImGui::TextColored(ImVec4(beating.x(), beating.y(), beating.z(), 1), "orange");
     ImGui::SameLine();
@@ -290,10 +300,10 @@ float drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge
     }
   }
   if (status.hasBlood && status.flowView != 0) {
-    if (status.hasHeart) ImGui::Spacing();
+    if (status.hasHeart && !folded) ImGui::Spacing();
     scaleLegend("Flow lines: speed (m/s)", status.speedMax, "m/s");
   } else if (status.hasBlood) {
-    if (status.hasHeart) ImGui::Spacing();
+    if (status.hasHeart && !folded) ImGui::Spacing();
     switch (render::BloodColour(status.bloodColour)) {
       case render::BloodColour::Speed: scaleLegend("Blood speed (m/s)", status.speedMax, "m/s"); break;
       case render::BloodColour::Pressure:
@@ -302,12 +312,12 @@ float drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge
       case render::BloodColour::Origin: originLegend(); break;
     }
   }
-  const float top = ImGui::GetWindowPos().y;
+  const OverlayBox box = currentWindowBox();
   ImGui::End();
-  return top;
+  return box;
 }
 
-void drawStatusOverlay(const ViewerStatus& status, float rightEdge, float bottomEdge) {
+OverlayBox drawStatusOverlay(const ViewerStatus& status, float rightEdge, float bottomEdge, bool folded) {
   constexpr float kMargin = 10;
   ImGui::SetNextWindowPos(ImVec2(rightEdge - kMargin, bottomEdge - kMargin), ImGuiCond_Always, ImVec2(1, 1));
   ImGui::SetNextWindowBgAlpha(0.75f);
@@ -321,20 +331,25 @@ void drawStatusOverlay(const ViewerStatus& status, float rightEdge, float bottom
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                    ImGuiWindowFlags_NoNav);
-  ImGui::Text("%s", status.scenarioName.c_str());
+  // Folded, the scenario's name is left to the control panel's scenario line.
+  if (!folded) ImGui::Text("%s", status.scenarioName.c_str());
   ImGui::Text("t = %.3f s", status.time);
   if (!status.phase.empty()) ImGui::Text("phase: %s", status.phase.c_str());
-  // The thesis-scale models are metres across: their volumes read better in m^3 (pump_readout.h).
-  if (status.cavity >= 0 && status.pump.scale.thesis)
-    ImGui::Text("cavity volume: %.3g m^3 (thesis scale)", status.cavity);
-  else if (status.cavity >= 0)
-    ImGui::Text("cavity volume: %.1f mL", status.cavity * status.pump.scale.volume);
-  ImGui::Text("frame: %.1f ms (%.0f fps)", status.frameMs, status.frameMs > 0 ? 1000 / status.frameMs : 0.0);
-  if (!status.liquidNote.empty()) {
-    // Wrapped to the corner's usual width, so that it still fits beside the colour key.
-    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 220);
-    ImGui::TextWrapped("%s", status.liquidNote.c_str());
-    ImGui::PopTextWrapPos();
+  // Folded, the pace only follows: the volume is in the pump panel beside, the frame time is for
+  // engineers.
+  if (!folded) {
+    // The thesis-scale models are metres across: their volumes read better in m^3 (pump_readout.h).
+    if (status.cavity >= 0 && status.pump.scale.thesis)
+      ImGui::Text("cavity volume: %.3g m^3 (thesis scale)", status.cavity);
+    else if (status.cavity >= 0)
+      ImGui::Text("cavity volume: %.1f mL", status.cavity * status.pump.scale.volume);
+    ImGui::Text("frame: %.1f ms (%.0f fps)", status.frameMs, status.frameMs > 0 ? 1000 / status.frameMs : 0.0);
+    if (!status.liquidNote.empty()) {
+      // Wrapped to the corner's usual width, so that it still fits beside the colour key.
+      ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 220);
+      ImGui::TextWrapped("%s", status.liquidNote.c_str());
+      ImGui::PopTextWrapPos();
+    }
   }
   // Always a line, so that the box keeps its height while the pace comes and goes (it grows
   // upward a frame late: a line that appears would be cut at the bottom for that frame).
@@ -342,7 +357,9 @@ void drawStatusOverlay(const ViewerStatus& status, float rightEdge, float bottom
     ImGui::TextColored(ImVec4(0.85f, 0.45f, 0.05f, 1), "slow motion: %.2gx real time", status.realTimeFactor);
   else
     ImGui::TextDisabled("pace: as asked");
+  const OverlayBox box = currentWindowBox();
   ImGui::End();
+  return box;
 }
 
 }  // namespace hs::viewer

@@ -101,14 +101,19 @@ inline constexpr float kPanelWidth = 300;
 
 void drawControlPanel(ViewerControls& controls, const ViewerStatus& status,
                       const std::vector<ScenarioChoice>& scenarios, int windowHeight);
-// The status corner at the bottom right of the scene: rightEdge, the x (pixels) it keeps to
-// (the pump panel's left side); bottomEdge, the y it keeps above (the circulation panel's top).
-void drawStatusOverlay(const ViewerStatus& status, float rightEdge, float bottomEdge);
-// The colour key (the wall's colours, the blood's speed scale) at the bottom left of the
-// scene; leftEdge: the control panel's right side, bottomEdge: the y (pixels) it keeps above
-// (the window's height, or the circulation panel's top).
-// Returns the key's top edge (y, pixels); bottomEdge when there is no key.
-float drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge);
+// A window's rectangle on the screen (pixels, y down).
+struct OverlayBox {
+  float x = 0, y = 0, width = 0, height = 0;
+};
+
+// The status corner, its bottom right corner kept `rightEdge`, `bottomEdge` less a margin (the
+// scene's right and bottom edges). Folded (a lesson open beside the heart): the time, the phase
+// and the pace; no name, volume, frame time or liquid note.
+OverlayBox drawStatusOverlay(const ViewerStatus& status, float rightEdge, float bottomEdge, bool folded = false);
+// The colour key (the wall's colours, the blood's speed scale), its bottom left corner at
+// `leftEdge`, `bottomEdge` plus a margin. Folded: the blood's scale alone (without blood, the
+// wall's first line). An empty box at (leftEdge, bottomEdge) when there is nothing to key.
+OverlayBox drawColourKey(const ViewerStatus& status, float leftEdge, float bottomEdge, bool folded = false);
 
 // "asked 4x, reaching 0.21x" when the simulation cannot keep the asked speed, else "".
 std::string speedShortfall(double asked, const ViewerStatus& status);

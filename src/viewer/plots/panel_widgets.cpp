@@ -4,8 +4,16 @@
 
 namespace hs::viewer {
 
+void wrappedTooltip(const char* text) {
+  ImGui::BeginTooltip();
+  ImGui::PushTextWrapPos(kTooltipWidth);
+  ImGui::TextUnformatted(text);
+  ImGui::PopTextWrapPos();
+  ImGui::EndTooltip();
+}
+
 void tooltip(const char* text) {
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+  if (ImGui::IsItemHovered()) wrappedTooltip(text);
 }
 
 void tooltip(const std::string& text) { tooltip(text.c_str()); }

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "viewer/plots/chart_drawing.h"
+#include "viewer/plots/panel_widgets.h"
 #include "viewer/plots/run_comparison.h"
 
 namespace hs::viewer {
@@ -188,7 +189,7 @@ void drawPlot(const char* id, const PlotSpec& spec, const PlotHistory& history, 
     ImGui::SameLine();
     ImGui::TextDisabled("%s", spec.note.c_str());
   }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", spec.tooltip);
+  tooltip(spec.tooltip);
   drawLegend(spec, history);
 
   const ImVec2 origin = ImGui::GetCursorScreenPos();

@@ -130,12 +130,13 @@ void drawBullseye(RegionControls& controls, const RegionStatus& status, float di
   centredText(draw, cx - radius - side / 2, cy, label, "septal");
   centredText(draw, cx + radius + side / 2, cy, label, "lateral");
 
-  if (hovered > 0)
-    ImGui::SetTooltip(
-        "%s: %s%s\nclick to %s", ahaSegmentName(hovered).c_str(),
-        stateText(status.segments[std::size_t(hovered)]),
-        status.outOfStep[std::size_t(hovered)] ? ", out of step with the rest" : "",
-        status.segments[std::size_t(hovered)] == SegmentState::Full ? "let it rest" : "make it beat");
+  if (hovered > 0) {
+    const SegmentState state = status.segments[std::size_t(hovered)];
+    const std::string text = ahaSegmentName(hovered) + ": " + stateText(state) +
+                             (status.outOfStep[std::size_t(hovered)] ? ", out of step with the rest" : "") +
+                             "\nclick to " + (state == SegmentState::Full ? "let it rest" : "make it beat");
+    wrappedTooltip(text.c_str());
+  }
   ImGui::SetCursorScreenPos(origin);
   ImGui::Dummy(ImVec2(ImGui::GetContentRegionAvail().x, diameter + 2 * lineHeight + 4));
 }
@@ -186,7 +187,7 @@ void drawRegionSection(RegionControls& c, const RegionStatus& s) {
   if (ImGui::Button("Apply (Enter)", ImVec2(120, 0))) c.applyRequested = true;
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-    ImGui::SetTooltip("%s", s.count == 0 ? "Choose at least one segment or paint a region first; to stop the "
+    wrappedTooltip(s.count == 0 ? "Choose at least one segment or paint a region first; to stop the "
                                            "beat altogether untick 'cardiac cycle'"
                                          : "Restart the simulation from t = 0 with this region beating");
   if (s.pending) {

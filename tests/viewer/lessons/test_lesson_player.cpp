@@ -5,6 +5,7 @@
 // run answers, photographs each step and moves on by itself.
 #include <gtest/gtest.h>
 
+#include "lessons/beat_summary.h"
 #include "viewer/lessons/lesson_player.h"
 
 namespace hs::viewer {
@@ -193,15 +194,7 @@ TEST(LessonPlayer, StepScreenshotsSitBesideTheFinalOne) {
 namespace hs::viewer {
 namespace {
 
-cardiac::BeatSummary playedBeat(int index, double durationS, double edvMl, double esvMl) {
-  cardiac::BeatSummary b;
-  b.index = index;
-  b.duration = durationS;
-  b.complete = true;
-  b.edv = edvMl * 1e-6;
-  b.esv = esvMl * 1e-6;
-  return b;
-}
+using testing::completeBeat;
 
 // The step waits for the circulation to settle, then pauses on the beat its result quotes (the
 // panels beside it show the same beat), and keeps the beats it played with the interval before
@@ -219,8 +212,8 @@ TEST(LessonPlayer, AStepEndsOnASettledBeatPausedAndKeepsTheBeatsItPlayed) {
   status.pump.beats.beatsCompleted = 8;
   status.pump.beats.settled = true;
   status.pump.scale = volumeScaleFor(120e-6);
-  status.pump.beats.played = {playedBeat(5, 0.83, 120, 50), playedBeat(6, 0.55, 118, 48),
-                              playedBeat(7, 1.10, 100, 45), playedBeat(8, 0.70, 125, 48)};
+  status.pump.beats.played = {completeBeat(5, 0.83, 120, 50), completeBeat(6, 0.55, 118, 48),
+                              completeBeat(7, 1.10, 100, 45), completeBeat(8, 0.70, 125, 48)};
   frame(player, status, controls);
   ASSERT_EQ(player.stage(), StepStage::Done);
   EXPECT_FALSE(controls.playing) << "paused on the beat the result quotes";

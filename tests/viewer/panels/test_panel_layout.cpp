@@ -13,36 +13,21 @@
 #include "viewer/panels/pump_panel.h"
 #include "viewer/panels/ui_panel.h"
 #include "viewer/plots/run_comparison.h"
+#include "windowless_imgui.h"
 
 namespace hs::viewer {
 namespace {
 
 class PanelLayout : public ::testing::TestWithParam<std::pair<int, int>> {
  protected:
-  void SetUp() override {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);  // the default font, as the viewer uses
-    ImGui::StyleColorsLight();
-    ImGui::GetStyle().WindowRounding = 0;
-  }
-  void TearDown() override { ImGui::DestroyContext(); }
-
   // A few frames (ImGui sizes windows from the frame before) of `draw`.
   template <typename Draw>
   void frames(int width, int height, Draw draw) {
-    ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = ImVec2(float(width), float(height));
-    io.DeltaTime = 1.0f / 30;
-    for (int i = 0; i < 4; ++i) {
-      ImGui::NewFrame();
-      draw();
-      ImGui::Render();
-    }
+    m_imgui.frames(width, height, draw);
   }
+
+ private:
+  testing::WindowlessImGui m_imgui;
 };
 
 // The status of the richest scenario: a heart with blood and the lumped circulation.
