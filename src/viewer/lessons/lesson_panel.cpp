@@ -88,11 +88,12 @@ void playedBeatsTable(std::vector<PlayedBeat> beats) {
   std::sort(beats.begin(), beats.end(),
             [](const PlayedBeat& a, const PlayedBeat& b) { return a.intervalBeforeMs < b.intervalBeforeMs; });
   ImGui::Spacing();
-  wrapped("The beats played, the shortest filling time first:");
+  wrapped("The beats played, the shortest filling time first (RR: the interval before the beat; SV: "
+          "its stroke volume):");
   if (!ImGui::BeginTable("played beats", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) return;
   ImGui::TableSetupColumn("beat");
-  ImGui::TableSetupColumn("interval before (ms)");
-  ImGui::TableSetupColumn(("stroke volume (" + beats.front().volumeUnit + ")").c_str());
+  ImGui::TableSetupColumn("RR (ms)");
+  ImGui::TableSetupColumn(("SV (" + beats.front().volumeUnit + ")").c_str());
   ImGui::TableHeadersRow();
   for (const PlayedBeat& b : beats) {
     ImGui::TableNextRow();

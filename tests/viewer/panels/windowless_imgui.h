@@ -5,6 +5,7 @@
 //   GPU's scissor cuts it;
 // - a glyph drawn smaller than it is: ImGui cut it on the CPU at a button's or a header's edge
 //   (RenderTextClipped);
+// - a table's header shortened with an ellipsis;
 // - a window reaching out of the screen.
 // A label cut exactly between two glyphs leaves no trace in the draw lists: these checks catch
 // any cut that goes through a letter.
@@ -104,8 +105,20 @@ inline std::vector<std::string> cutText() {
       }
     }
   }
+  // A table's header too long for its column: ImGui shortens it with an ellipsis.
+  ImGuiContext& g = *GImGui;
+  for (int t = 0; t < g.Tables.GetMapSize(); ++t) {
+    const ImGuiTable* table = g.Tables.TryGetMapData(t);
+    if (!table || table->LastFrameActive != g.FrameCount) continue;
+    for (int c = 0; c < table->ColumnsCount; ++c) {
+      const ImGuiTableColumn& column = table->Columns[c];
+      if (column.ContentMaxXHeadersIdeal > column.MaxX + 0.5f)
+        cuts.push_back(std::string(table->OuterWindow->Name) + ": the header of column " + std::to_string(c + 1) +
+                       " needs " + std::to_string(int(column.ContentMaxXHeadersIdeal - column.MinX)) + " px of " +
+                       std::to_string(int(column.MaxX - column.MinX)));
+    }
+  }
   // Windows drawn this frame reach no further than the screen.
-  const ImGuiContext& g = *GImGui;
   for (const ImGuiWindow* w : g.Windows) {
     if (!w->Active || w->Hidden || (w->Flags & ImGuiWindowFlags_ChildWindow)) continue;
     const ImVec2 max(w->Pos.x + w->Size.x, w->Pos.y + w->Size.y);
