@@ -103,6 +103,7 @@ RunMonitor::RunMonitor(const HeartSimulation& sim, MonitorSettings settings)
   if (sim.hasHeart() && settings.pump) m_last.cavity = double(sim.cavityVolume());
   if (sim.lumped() && settings.pump)
     m_circulation.emplace(double(sim.scenario().simulation.dt), settings.lumpedSamples);
+  if (sim.circulation() && sim.hasBlood() && settings.pump) m_ventricleBlood.emplace(sim.particles(), sim.firstBloodParticle());
   // The wall's surface hinges that are smooth at rest (bent by less than kSmoothHinge) and their
   // angles (the model's vertices are the first particles, heart_simulation.h), to find creases:
   // a crease is a fold where the surface was smooth. The modelled corners (the base's rim, the
@@ -157,6 +158,9 @@ const Verdict& RunMonitor::observe() {
   // No sound at the first step: its phase is read without the one before.
   if (m_last.heartPhase != HeartPhase::None) sample.heartSound = heartSoundAt(m_last.heartPhase, sample.heartPhase);
   if (sample.lumped) sample.ecg = m_sim.ecgMillivolts();
+  if (m_ventricleBlood && sample.circulation)
+    sample.ventricleKineticEnergy = m_ventricleBlood->observe(m_sim.particles(), m_sim.circulation()->meter.regions(),
+                                                              m_last.heartPhase, sample.heartPhase, sample.time);
   ++m_observed;
   m_extremes.add(sample, m_sim.hasHeart() && m_settings.pump);
   if (m_sim.hasHeart() && m_settings.beatList) m_beats.record(sample.startTime, sample.phase, sample.cavity, sample.flows);
@@ -209,6 +213,7 @@ RunSummary RunMonitor::summary() const {
   r.blood = m_sim.hasBlood();
   r.beats = m_beats;
   r.circulation = m_circulation;
+  r.ventricleBlood = m_ventricleBlood;
   const RunExtremes& e = m_extremes;
   if (r.heart) {
     const LvModel& model = m_sim.model();
@@ -283,12 +288,12 @@ std::string heartPhaseLabel(const StepSample& s) {
 
 void StepSample::save(pbd::StateWriter& w) const {
   w.fields(step, startTime, time, phase, heartPhase, heartSound, ecg, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
-           contraction, baseDescent, vesselFill, surfaceTurn, bloodPush);
+           contraction, baseDescent, vesselFill, surfaceTurn, bloodPush, ventricleKineticEnergy);
 }
 
 void StepSample::load(pbd::StateReader& r) {
   r.fields(step, startTime, time, phase, heartPhase, heartSound, ecg, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
-           contraction, baseDescent, vesselFill, surfaceTurn, bloodPush);
+           contraction, baseDescent, vesselFill, surfaceTurn, bloodPush, ventricleKineticEnergy);
 }
 
 void RunExtremes::save(pbd::StateWriter& w) const {
@@ -305,6 +310,8 @@ void RunMonitor::save(pbd::StateWriter& w) const {
   w.section("run monitor");
   w.fields(m_verdict, m_last, m_beats, m_circulation.has_value());
   if (m_circulation) m_circulation->save(w);
+  w.put(m_ventricleBlood.has_value());
+  if (m_ventricleBlood) m_ventricleBlood->save(w);
   w.fields(m_extremes, m_observed);
 }
 
@@ -319,6 +326,12 @@ void RunMonitor::load(pbd::StateReader& r) {
                                       : "run monitor: the circulation record is missing",
                           at);
   if (m_circulation) m_circulation->load(r);
+  bool ventricleBlood = false;
+  r.get(ventricleBlood);
+  if (ventricleBlood != m_ventricleBlood.has_value())
+    throw pbd::StateError("run monitor: the ventricle's blood figures are saved for a run without blood or missing",
+                          r.offset());
+  if (m_ventricleBlood) m_ventricleBlood->load(r);
   r.fields(m_extremes, m_observed);
   // The density error is averaged over the last second before this run's end: a window that
   // begins after the checkpoint starts empty; one that began before it keeps what it holds.

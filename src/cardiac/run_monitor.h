@@ -14,6 +14,7 @@
 
 #include "cardiac/anatomy/lv_model.h"
 #include "cardiac/blood.h"
+#include "cardiac/blood/ventricle_blood.h"
 #include "cardiac/circulation.h"
 #include "cardiac/circulation/beat_metrics.h"
 #include "cardiac/circulation/circulation_recorder.h"
@@ -94,6 +95,8 @@ struct StepSample {
   double surfaceTurn = 0;
   // Two-way coupling: the cavity's change (m^3) from the blood's push on the wall in the step.
   double bloodPush = 0;
+  // Heart and blood with valves: the kinetic energy of the blood in the ventricle (J).
+  double ventricleKineticEnergy = 0;
   [[nodiscard]] double pressure(FlowRegion region) const { return flowStep.pressure[std::size_t(region)]; }
   void save(pbd::StateWriter& w) const;
   void load(pbd::StateReader& r);
@@ -139,6 +142,9 @@ struct RunSummary {
   double cavityMin = 0, cavityMax = 0;
   BeatTracker beats{0};
   std::optional<CirculationRecorder> circulation;  // circulation.lumped
+  // Heart and blood with valves: the flow components of each beat and the blood's kinetic
+  // energy over each cycle (ventricle_blood.h).
+  std::optional<VentricleBlood> ventricleBlood;
   // [motion]: the recorded beat's frame volumes (m^3; empty without one), its period (s) and the
   // largest relative difference of the 3D cavity from the recorded volume over the run.
   std::vector<double> motionFrameVolumes;
@@ -181,6 +187,8 @@ class RunMonitor {
   // The last observed step (step 0: the state the monitor started from).
   [[nodiscard]] const StepSample& last() const { return m_last; }
   [[nodiscard]] const BeatTracker& beats() const { return m_beats; }
+  // Heart and blood with valves, figures gathered: the blood's own figures; null otherwise.
+  [[nodiscard]] const VentricleBlood* ventricleBlood() const { return m_ventricleBlood ? &*m_ventricleBlood : nullptr; }
   // circulation.lumped with figures gathered (MonitorSettings::pump); null otherwise.
   [[nodiscard]] const CirculationRecorder* circulation() const { return m_circulation ? &*m_circulation : nullptr; }
   [[nodiscard]] const RunExtremes& extremes() const { return m_extremes; }
@@ -200,6 +208,7 @@ class RunMonitor {
   StepSample m_last;
   BeatTracker m_beats;
   std::optional<CirculationRecorder> m_circulation;
+  std::optional<VentricleBlood> m_ventricleBlood;
   RunExtremes m_extremes;
   std::int64_t m_observed = 0;
   std::vector<pbd::Hinge> m_hinges;     // of the wall's surface, with a heart

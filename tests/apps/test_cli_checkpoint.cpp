@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
+#include "io/output/checkpoint.h"
 
 namespace hs::testing {
 namespace {
@@ -104,7 +105,7 @@ TEST_F(BadCheckpoint, ForeignFileHasBadMagic) { expectOneLine(resume("{\"not\": 
 TEST_F(BadCheckpoint, OtherVersionIsNamed) {
   std::string bytes = s_good;
   bytes[8] = 9;
-  expectOneLine(resume(bytes), "format version 9; this heartsim reads version 4");
+  expectOneLine(resume(bytes), "format version 9; this heartsim reads version " + std::to_string(hs::io::kCheckpointVersion));
 }
 
 TEST_F(BadCheckpoint, TruncatedFileSaysAtWhichByte) {

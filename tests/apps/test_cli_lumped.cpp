@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -107,6 +108,20 @@ TEST(CliLumped, NormalLumpedGivesAHeartsPressuresAndItsPlots) {
   EXPECT_EQ(tissue.at("inverted_tets").get<int>(), 0);
   EXPECT_LT(tissue.at("worst_tet_volume_error").get<double>(), 0.6);
   EXPECT_LT(tissue.at("surface_turn_max_deg").get<double>(), 45);
+  // The blood's own figures (cardiac/blood/ventricle_blood.h): each beat's four flow components
+  // sum to the end-diastolic blood; their mean waits for the beats after the first two.
+  ASSERT_FALSE(h.at("flow_component_beats").empty());
+  for (const auto& beat : h.at("flow_component_beats")) {
+    const double sum = beat.at("direct").get<double>() + beat.at("retained_inflow").get<double>() +
+                       beat.at("delayed_ejection").get<double>() + beat.at("residual").get<double>();
+    EXPECT_NEAR(sum, 1.0, 1e-9) << beat;
+    EXPECT_GT(beat.at("direct").get<double>(), 0.0) << "blood that entered leaves in the next systole";
+  }
+  EXPECT_TRUE(h.at("flow_components").is_null()) << "two beats only";
+  std::ifstream metrics(dir / "out" / "metrics.csv");
+  std::string header;
+  std::getline(metrics, header);
+  EXPECT_NE(header.find(",lv_kinetic_energy_uj"), std::string::npos) << header;
   for (const char* png : {"pv_loop.png", "wiggers.png"}) {
     const auto path = dir / "out" / png;
     EXPECT_TRUE(std::filesystem::exists(path)) << png;

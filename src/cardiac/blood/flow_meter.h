@@ -50,6 +50,9 @@ class FlowMeter {
   void recordLoop(std::size_t returned, std::size_t reentered, std::size_t waiting);
 
   [[nodiscard]] const FlowStep& lastStep() const { return m_last; }
+  // The region of each blood particle at the last step's end, by storage order from `first`
+  // (stale for a parked particle: read it with the particle's active flag).
+  [[nodiscard]] const std::vector<FlowRegion>& regions() const { return m_regions; }
   // Volumes through the two orifices in the step just measured (m^3).
   [[nodiscard]] ValveFlows lastStepFlows() const;
   [[nodiscard]] Real particleVolume() const { return m_particleVolume; }

@@ -32,7 +32,9 @@ struct CheckpointError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-inline constexpr std::uint32_t kCheckpointVersion = 4;  // 3: the blood's push on the wall in the run monitor; 4: the heart's phase
+// 3: the blood's push on the wall in the run monitor; 4: the heart's phase; 5: the ventricle's
+// blood (flow components, kinetic energy)
+inline constexpr std::uint32_t kCheckpointVersion = 5;
 
 struct Checkpoint {
   std::string scenarioToml;

@@ -19,7 +19,7 @@ void writeFlowRow(std::ostream& csv, const cardiac::StepSample& sample) {
       << ',' << f.mitralForward * kMlPerM3 << ',' << f.mitralBackward * kMlPerM3 << ','
       << f.aorticForward * kMlPerM3 << ',' << f.aorticBackward * kMlPerM3 << ','
       << sample.pressure(FlowRegion::InflowVessel) << ',' << sample.pressure(FlowRegion::Ventricle) << ','
-      << sample.pressure(FlowRegion::OutflowVessel);
+      << sample.pressure(FlowRegion::OutflowVessel) << ',' << sample.ventricleKineticEnergy * 1e6;
 }
 
 void writeLumpedRow(std::ostream& csv, const cardiac::StepSample& sample) {
@@ -45,7 +45,7 @@ void writeMetricsHeader(std::ostream& csv, const MetricsColumns& columns) {
   if (columns.flows)
     csv << ",mitral_open,aortic_open,particles_inflow_vessel,particles_lv,particles_outflow_vessel,"
            "particles_returning,particles_outside,mitral_forward_ml,mitral_backward_ml,aortic_forward_ml,"
-           "aortic_backward_ml,pressure_inflow_vessel_pa,pressure_lv_pa,pressure_outflow_vessel_pa";
+           "aortic_backward_ml,pressure_inflow_vessel_pa,pressure_lv_pa,pressure_outflow_vessel_pa,lv_kinetic_energy_uj";
   if (columns.lumped)
     csv << ",lv_pressure_mmhg,aortic_pressure_mmhg,la_pressure_mmhg,lumped_lv_volume_ml,lumped_mitral_flow_ml_s,"
            "lumped_aortic_flow_ml_s,lumped_mitral_open,lumped_aortic_open,activation_ventricle,activation_atrium,"

@@ -58,6 +58,61 @@ void addCirculationReport(nlohmann::ordered_json& heart, const cardiac::Circulat
   heart["lumped_beats"] = beats;
 }
 
+// The blood's own figures, as 4D-flow MRI reads them (cardiac/blood/ventricle_blood.h): each
+// beat's flow components (fractions of the blood in the ventricle at end-diastole) and each
+// cycle's kinetic energy, and their means over the beats after the first two (null before).
+void addVentricleBloodReport(nlohmann::ordered_json& heart, const cardiac::VentricleBlood& blood,
+                             const cardiac::BeatTracker& wallBeats) {
+  constexpr std::size_t kSkipped = 2;  // the first beats, while the blood settles into its path
+  auto shares = [](const cardiac::FlowComponents& c) {
+    return nlohmann::ordered_json{{"direct", c.direct},
+                                  {"retained_inflow", c.retainedInflow},
+                                  {"delayed_ejection", c.delayedEjection},
+                                  {"residual", c.residual}};
+  };
+  nlohmann::ordered_json beats = nlohmann::json::array();
+  cardiac::FlowComponents mean;
+  std::size_t counted = 0;
+  for (std::size_t k = 0; k < blood.beats().size(); ++k) {
+    const cardiac::BeatFlowComponents& b = blood.beats()[k];
+    nlohmann::ordered_json beat = shares(b.shares);
+    beat["end_diastole_s"] = b.endDiastole;
+    beat["mean_residence_beats"] = b.shares.meanResidenceBeats;
+    beat["stayed_over_3_beats"] = b.shares.stayedOverThreeBeats;
+    beats.push_back(beat);
+    if (k < kSkipped) continue;
+    ++counted;
+    mean.direct += b.shares.direct, mean.retainedInflow += b.shares.retainedInflow;
+    mean.delayedEjection += b.shares.delayedEjection, mean.residual += b.shares.residual;
+    mean.meanResidenceBeats += b.shares.meanResidenceBeats, mean.stayedOverThreeBeats += b.shares.stayedOverThreeBeats;
+  }
+  nlohmann::ordered_json components = nullptr;
+  if (counted > 0) {
+    const double n = double(counted);
+    mean.direct /= n, mean.retainedInflow /= n, mean.delayedEjection /= n, mean.residual /= n;
+    components = shares(mean);
+    heart["mean_residence_beats"] = mean.meanResidenceBeats / n;
+    heart["stayed_over_3_beats"] = mean.stayedOverThreeBeats / n;
+  }
+  heart["flow_components"] = components;
+  heart["flow_component_beats"] = beats;
+  // Kinetic energy per mL of end-diastolic volume: the cycles' time means over the mean EDV of
+  // the wall's beats, both after the first two.
+  double energy = 0, peak = 0, edv = 0;
+  std::size_t cycles = 0, edvBeats = 0;
+  for (std::size_t k = kSkipped; k < blood.cycles().size(); ++k, ++cycles) {
+    energy += blood.cycles()[k].mean;
+    peak += blood.cycles()[k].fillingPeak;
+  }
+  for (std::size_t k = kSkipped; k < wallBeats.beats().size(); ++k)
+    if (wallBeats.beats()[k].complete) edv += wallBeats.beats()[k].edv, ++edvBeats;
+  const bool measured = cycles > 0 && edvBeats > 0 && edv > 0;
+  const double perMl = measured ? 1e6 / (edv / double(edvBeats) * kClinical.volume) : 0.0;
+  heart["kinetic_energy_uj_per_ml"] = measured ? nlohmann::ordered_json(energy / double(cycles) * perMl) : nullptr;
+  heart["kinetic_energy_filling_peak_uj_per_ml"] =
+      measured ? nlohmann::ordered_json(peak / double(cycles) * perMl) : nullptr;
+}
+
 // The wall's part: mesh, volume errors, cavity and beats.
 // [motion]: the recorded beat's own volumes beside the 3D heart's (null without a recording).
 nlohmann::ordered_json motionReport(const cardiac::RunSummary& run) {
@@ -113,6 +168,7 @@ void addHeartReport(nlohmann::ordered_json& report, const cardiac::RunSummary& r
   report["beats"] = run.beats.beats().size();
   report["heart"] = heartPumpReport(run.beats);
   if (run.circulation) addCirculationReport(report["heart"], *run.circulation);
+  if (run.ventricleBlood) addVentricleBloodReport(report["heart"], *run.ventricleBlood, run.beats);
   report["motion"] = motionReport(run);
 }
 

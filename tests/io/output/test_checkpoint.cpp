@@ -94,7 +94,7 @@ TEST(Checkpoint, OtherVersionIsNamed) {
   std::vector<std::uint8_t> bytes = normalCheckpointBytes();
   bytes[8] = 7;
   EXPECT_EQ(thrownMessage<CheckpointError>([&] { decodeCheckpoint(bytes, "a.hsck"); }),
-            "a.hsck: format version 7; this heartsim reads version 4");
+            "a.hsck: format version 7; this heartsim reads version " + std::to_string(kCheckpointVersion));
 }
 
 TEST(Checkpoint, OtherPrecisionIsNamed) {

@@ -1,0 +1,70 @@
+#pragma once
+// What the 3D blood in the ventricle itself tells, step by step and beat by beat, as 4D-flow MRI
+// reads a patient's: its kinetic energy (the sum of m v^2 / 2 over the particles in the
+// ventricle) and the flow components of each beat (flow_components.h). The beat's two events
+// come from the heart's phase (heart_phase.h): end-diastole when filling gives way to isovolumic
+// contraction (or straight to ejection), end-systole when ejection ends. Fed by the run's monitor
+// after each step with the flow meter's regions.
+#include <span>
+#include <vector>
+
+#include "cardiac/anatomy/flow_path.h"
+#include "cardiac/blood/flow_components.h"
+#include "cardiac/circulation/heart_phase.h"
+#include "pbd/core/particles.h"
+
+namespace hs::cardiac {
+
+// One beat's components, with the time of the end-diastole they are shares of (s).
+struct BeatFlowComponents {
+  double endDiastole = 0;
+  FlowComponents shares;
+  void save(pbd::StateWriter& w) const {
+    const FlowComponents& c = shares;
+    w.fields(endDiastole, c.direct, c.retainedInflow, c.delayedEjection, c.residual, c.particles,
+             c.meanResidenceBeats, c.stayedOverThreeBeats);
+  }
+  void load(pbd::StateReader& r) {
+    FlowComponents& c = shares;
+    r.fields(endDiastole, c.direct, c.retainedInflow, c.delayedEjection, c.residual, c.particles,
+             c.meanResidenceBeats, c.stayedOverThreeBeats);
+  }
+};
+
+// The kinetic energy of the blood in the ventricle over one cardiac cycle, from an end-diastole
+// to the next (J): its time mean and its largest value while filling (the E and A jets).
+struct CycleKineticEnergy {
+  double start = 0, end = 0;  // s
+  double mean = 0, fillingPeak = 0;
+  void save(pbd::StateWriter& w) const { w.fields(start, end, mean, fillingPeak); }
+  void load(pbd::StateReader& r) { r.fields(start, end, mean, fillingPeak); }
+};
+
+class VentricleBlood {
+ public:
+  // `first`: the first blood particle; the blood is [first, particles.size()).
+  VentricleBlood(const pbd::Particles& particles, pbd::Index first);
+
+  // After a step ending at `time`: `regions[b]` is the region of the blood particle stored at
+  // first + b (FlowMeter::regions()); the phase went from `before` to `after`. Returns the
+  // kinetic energy of the blood in the ventricle (J).
+  double observe(const pbd::Particles& particles, std::span<const FlowRegion> regions, HeartPhase before,
+                 HeartPhase after, double time);
+
+  [[nodiscard]] const std::vector<BeatFlowComponents>& beats() const { return m_beats; }
+  [[nodiscard]] const std::vector<CycleKineticEnergy>& cycles() const { return m_cycles; }
+  void save(pbd::StateWriter& w) const;
+  void load(pbd::StateReader& r);
+
+ private:
+  pbd::Index m_first;
+  FlowComponentTracker m_tracker;
+  std::vector<std::uint8_t> m_inVentricle;  // scratch, by particle identity
+  double m_endDiastole = -1;  // s; negative before the first
+  std::vector<BeatFlowComponents> m_beats;
+  double m_energySum = 0, m_fillingPeak = 0;  // since the last end-diastole
+  std::int64_t m_energySteps = 0;
+  std::vector<CycleKineticEnergy> m_cycles;
+};
+
+}  // namespace hs::cardiac
