@@ -3,7 +3,7 @@
 // 0, end-diastole) for the [motion] tests: heartsim ships only frame 0 of the biv-me patient's
 // cine MRI, so the tests make the other frames from it. Where scaledFrames (recorded_beat_frames.h)
 // shrinks the surface about its centroid, this moves each point as the ventricle's wall does
-// in systole (Rademakers et al. 1994; Carlhaell et al. 2004; Sengupta et al. 2006):
+// in systole, at a healthy adult's figures:
 //  - the long axis shortens toward a nearly fixed apex: a point at height s above the apex
 //    (s along the long axis, 0 at the apex, L at the annuli's centroid) descends by D s / L, so
 //    the base descends D (12-15 mm in a healthy adult);
