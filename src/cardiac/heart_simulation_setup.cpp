@@ -53,6 +53,60 @@ void checkContraction(const CycleSettings& cycle, const LvModel& model) {
   throw std::invalid_argument(message.str());
 }
 
+// The vessels a patient's heart with blood gets (patient_vessels.h), sized by the scenario.
+PatientVesselSizes vesselSizes(const Scenario& scenario, const std::string& resolution) {
+  const LvGeometryParams& g = scenario.geometry;
+  PatientVesselSizes sizes;
+  sizes.inflowLength = g.inflowVesselLength;
+  sizes.outflowLength = g.outflowVesselLength;
+  sizes.wallThickness = g.vesselWallThickness;
+  sizes.edge = Real(wallResolution(resolution).edgeLength);
+  return sizes;
+}
+
+// Whether the wall at `resolution` follows the scenario's recording: built as the run would
+// build it (with the vessels when there is blood) and driven through one beat (findFold).
+// A resolution whose wall or vessels cannot be built at all does not follow it either.
+bool wallFollowsRecording(const Scenario& scenario, const std::string& resolution) {
+  PatientModelSettings patient = scenario.patient;
+  patient.resolution = resolution;
+  try {
+    const PatientWall wall = buildPatientShell(patient, scenario.geometry.wallThickness);
+    LvModel model = lvModelFromPatientWall(wall);
+    if (scenario.blood.enabled) attachPatientVessels(model, vesselSizes(scenario, resolution));
+    const RecordedBeat beat(model, wall, scenario.motion.frameSurfaces, double(scenario.motion.period), 0);
+    const RecordedFold fold = beat.findFold(double(scenario.simulation.dt));
+    return fold.tets == 0 && fold.triangles == 0;
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
+}
+
+// One line for a recording the wall cannot follow: which frames, how many tets of which AHA
+// segments, and which of the other resolutions would follow it (each tried as above).
+std::string refusal(const Scenario& scenario, const RecordedFold& fold) {
+  const std::string& resolution = scenario.patient.resolution;
+  std::ostringstream s;
+  s.precision(3);
+  s << "motion.frames: the " << resolution << " wall (" << wallResolution(resolution).edgeLength * 1e3
+    << " mm edges) cannot follow frames " << fold.firstFrame;
+  if (fold.lastFrame != fold.firstFrame) s << "-" << fold.lastFrame;
+  s << " of the recording: ";
+  if (fold.triangles > 0) s << fold.triangles << " endocardial triangles turn over (the surface folds)";
+  if (fold.triangles > 0 && fold.tets > 0) s << " and ";
+  if (fold.tets > 0) s << fold.tets << " tetrahedra turn inside out";
+  s << " in AHA segment" << (fold.segments.size() > 1 ? "s " : " ");
+  for (std::size_t k = 0; k < fold.segments.size(); ++k) s << (k ? ", " : "") << fold.segments[k];
+  s << ", the first at t = " << fold.firstTime << " s; ";
+  std::vector<std::string> follow;
+  for (const std::string other : {"coarse", "default", "fine"})
+    if (other != resolution && wallFollowsRecording(scenario, other)) follow.push_back(other);
+  if (follow.empty()) return s.str() + "no wall resolution (coarse, default, fine) follows it";
+  s << "model.mesh_resolution = \"" << follow[0] << "\" follows it";
+  if (follow.size() > 1) s << " (and \"" << follow[1] << "\")";
+  return s.str();
+}
+
 }  // namespace
 
 HeartSimulation::HeartSimulation(const Scenario& scenario, int threads)
@@ -121,14 +175,8 @@ void HeartSimulation::chooseWallMotion() {
 
 // A patient's heart with blood gets the vessels it enters and leaves by (patient_vessels.h).
 void HeartSimulation::attachVessels() {
-  const LvGeometryParams& g = m_scenario.geometry;
-  PatientVesselSizes sizes;
-  sizes.inflowLength = g.inflowVesselLength;
-  sizes.outflowLength = g.outflowVesselLength;
-  sizes.wallThickness = g.vesselWallThickness;
-  sizes.edge = Real(wallResolution(m_scenario.patient.resolution).edgeLength);
   try {
-    attachPatientVessels(*m_model, sizes);
+    attachPatientVessels(*m_model, vesselSizes(m_scenario, m_scenario.patient.resolution));
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(patientModelFile(m_scenario.patient) + ": " + e.what());
   }
@@ -199,6 +247,10 @@ void HeartSimulation::buildRecordedBeat(const PatientWall& wall) {
                                 std::to_string(int(std::lround(systole * motion.count))) + " of " +
                                 std::to_string(motion.count) +
                                 "; expected frame 0 at end-diastole and end-systole between 5% and 95% of the beat");
+  // The recording drives the whole wall, so a tet it would turn inside out is found here, before
+  // the first step, rather than by the run stopping at it.
+  const RecordedFold fold = m_recordedBeat->findFold(double(m_scenario.simulation.dt));
+  if (fold.tets > 0 || fold.triangles > 0) throw std::invalid_argument(refusal(m_scenario, fold));
   CycleSettings cycle = m_scenario.cycle;
   cycle.mode = TimingMode::Physiological;
   cycle.heartRateBpm = Real(60.0 / double(motion.period));

@@ -89,6 +89,11 @@ std::vector<std::vector<Index>> vertexNeighbours(std::size_t vertexCount,
 std::vector<Vec3d> smoothNormals(std::vector<Vec3d> normals, const std::vector<Triangle>& triangles,
                                  int iterations) {
   const auto nb = vertexNeighbours(normals.size(), triangles);
+  return smoothNormals(std::move(normals), nb, iterations);
+}
+
+std::vector<Vec3d> smoothNormals(std::vector<Vec3d> normals, const std::vector<std::vector<Index>>& nb,
+                                 int iterations) {
   for (int it = 0; it < iterations; ++it) {
     std::vector<Vec3d> next(normals.size());
     for (std::size_t i = 0; i < normals.size(); ++i) {

@@ -28,6 +28,10 @@ std::vector<Vec3d> vertexNormals(const std::vector<Vec3>& vertices, const std::v
 // surface is curved more than the offset (Jacobi: independent of the vertex order).
 std::vector<Vec3d> smoothNormals(std::vector<Vec3d> normals, const std::vector<Triangle>& triangles,
                                  int iterations);
+// The same over vertex neighbours already listed (vertexNeighbours), for a surface smoothed
+// again every step.
+std::vector<Vec3d> smoothNormals(std::vector<Vec3d> normals, const std::vector<std::vector<Index>>& neighbours,
+                                 int iterations);
 
 // The triangles `subset` of a surface with only the vertices they use, renumbered in the order
 // of first use; `originalVertex[i]` is the old id of new vertex i.

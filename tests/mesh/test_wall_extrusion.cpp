@@ -130,6 +130,23 @@ TEST(ExtrudeWall, ThicknessToAnOuterSphereIsTheGap) {
   for (double ti : t) EXPECT_NEAR(ti, 0.5, 0.01);
 }
 
+// The recorded beat smooths its directions every step over neighbours listed once: the same
+// sweeps as over the triangles, to the bit. A bumpy sphere (every third vertex pushed out) so
+// that the sweeps have something to smooth.
+TEST(SmoothNormals, OverListedNeighboursIsTheSameAsOverTriangles) {
+  auto sphere = makeSphere(2, 1.0);
+  for (std::size_t i = 0; i < sphere.vertices.size(); i += 3) sphere.vertices[i] *= Real(1.2);
+  const std::vector<Vec3d> raw = vertexNormals(sphere.vertices, sphere.triangles);
+  const auto neighbours = vertexNeighbours(sphere.vertices.size(), sphere.triangles);
+  for (int sweeps : {0, 1, 10}) {
+    const std::vector<Vec3d> a = smoothNormals(raw, sphere.triangles, sweeps);
+    const std::vector<Vec3d> b = smoothNormals(raw, neighbours, sweeps);
+    ASSERT_EQ(a.size(), raw.size());
+    for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i], b[i]) << "vertex " << i << ", " << sweeps << " sweeps";
+  }
+  EXPECT_GT((smoothNormals(raw, neighbours, 10)[0] - raw[0]).norm(), 1e-3);  // the sweeps moved them
+}
+
 TEST(ClosestPointOnTriangle, AgreesWithDenseSampling) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-2, 2);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "mesh/surface_mesh.h"
+#include "mesh/wall_extrusion.h"
 #include "pbd/core/closest_point.h"
 
 namespace hs::cardiac {
@@ -65,29 +66,18 @@ void accumulateNormalsAndAreas(const std::vector<pbd::Triangle>& triangles, cons
   }
 }
 
-// Edges from an annulus within which the epicardium is left to the wall's constraints (see the
-// header): two rings of cavity vertices around each annulus.
-constexpr int kAnnulusReach = 2;
+// Sweeps of smoothing of the endocardium's normals: the wall's extrusion's (wall_extrusion.h),
+// so that d_i(0) are the directions the epicardium was placed along.
+const int kDirectionSweeps = pbd::ExtrusionSettings{}.normalSmoothing;
 
-// Per model vertex: an endocardial vertex within `reach` edges of the cavity surface from a
-// vertex of the mitral or aortic ring.
-std::vector<std::uint8_t> nearAnnuli(const LvModel& model, int reach) {
-  const std::vector<std::vector<Index>> neighbours = pbd::vertexNeighbours(model.mesh.vertices.size(), model.cavitySurface);
-  std::vector<std::uint8_t> near(model.mesh.vertices.size(), 0);
-  std::vector<Index> front(model.mitralRing);
-  front.insert(front.end(), model.aorticRing.begin(), model.aorticRing.end());
-  for (Index v : front) near[v] = 1;
-  for (int step = 0; step < reach; ++step) {
-    std::vector<Index> next;
-    for (Index v : front)
-      for (Index w : neighbours[v])
-        if (!near[w]) {
-          near[w] = 1;
-          next.push_back(w);
-        }
-    front = std::move(next);
-  }
-  return near;
+// The smallest rotation taking unit d0 to unit d, applied to s (Rodrigues' formula with
+// v = d0 x d, c = d0 . d: R s = c s + v x s + v (v . s) / (1 + c)); s unchanged where d turned
+// fully round (c = -1), which findFold then reports.
+Vec3d turned(const Vec3d& s, const Vec3d& d0, const Vec3d& d) {
+  const double c = d0.dot(d);
+  if (!(1 + c > 1e-12)) return s;
+  const Vec3d v = d0.cross(d);
+  return c * s + v.cross(s) + v * (v.dot(s) / (1 + c));
 }
 
 void checkFrames(const std::vector<Surface>& frames, double period) {
@@ -144,25 +134,28 @@ RecordedBeat::RecordedBeat(const LvModel& model, const PatientWall& wall, const 
       m_offset[f].push_back(offset.cast<Real>());
     }
   }
-  // The epicardial patches at rest: the endocardium's normals and areas (its cavity triangles
-  // face into the wall), the epicardium's areas (the outer faces, all of odd vertices).
+  // The epicardial patches at rest: the endocardium's directions and areas (its cavity
+  // triangles face into the wall), the epicardium's areas (the outer faces, all of odd vertices).
   const std::size_t n = model.mesh.vertices.size();
-  std::vector<Vec3d> normal(n), unusedNormal(n);
-  std::vector<double> endoArea(n), epiArea(n);
-  accumulateNormalsAndAreas(model.cavitySurface, model.mesh.vertices, 0, normal, endoArea);
+  m_neighbours = pbd::vertexNeighbours(n, model.cavitySurface);
+  m_direction.resize(n);
+  m_area.resize(n);
+  findDirections(model.mesh.vertices, 0);
+  m_restDirection = m_direction;
+  const std::vector<double> endoArea = m_area;
+  std::vector<Vec3d> unusedNormal(n);
+  std::vector<double> epiArea(n);
   std::vector<pbd::Triangle> outer;
   for (const pbd::Triangle& t : model.surface)
     if (t[0] % 2 == 1 && t[1] % 2 == 1 && t[2] % 2 == 1) outer.push_back(t);
   accumulateNormalsAndAreas(outer, model.mesh.vertices, 0, unusedNormal, epiArea);
-  const std::vector<std::uint8_t> nearAnnulus = nearAnnuli(model, kAnnulusReach);
   for (Index vertex : m_endocardial) {
-    if (nearAnnulus[vertex]) continue;
-    const Vec3d normalAtRest = normal[vertex].normalized();
+    const Vec3d d0 = m_restDirection[vertex];
     const Vec3d offset = (model.mesh.vertices[vertex + 1] - model.mesh.vertices[vertex]).cast<double>();
     EpicardialPatch patch{};
     patch.vertex = vertex + 1;
-    patch.restThickness = std::max(offset.dot(normalAtRest), 0.0);
-    patch.across = offset - patch.restThickness * normalAtRest;
+    patch.restThickness = std::max(offset.dot(d0), 0.0);
+    patch.across = offset - patch.restThickness * d0;
     patch.restArea = endoArea[vertex];
     const double widening = std::sqrt(epiArea[vertex + 1] / endoArea[vertex]);  // 1 + h0 / r0
     patch.restRadius = widening > 1 + 1e-6 ? patch.restThickness / (widening - 1) : 0.0;
@@ -175,8 +168,6 @@ RecordedBeat::RecordedBeat(const LvModel& model, const PatientWall& wall, const 
   m_driven = m_endocardial;
   for (const EpicardialPatch& patch : m_epicardium) m_driven.push_back(patch.vertex);
   for (const VesselFollower& f : m_vessels) m_driven.push_back(f.vertex);
-  m_normal.resize(n);
-  m_area.resize(n);
 }
 
 double RecordedBeat::thicknessAt(const EpicardialPatch& patch, double area) const {
@@ -187,31 +178,110 @@ double RecordedBeat::thicknessAt(const EpicardialPatch& patch, double area) cons
   return std::cbrt(std::pow(r0 + h0, 3) - std::pow(r0, 3) + std::pow(r, 3)) - r;
 }
 
-void RecordedBeat::placeEpicardium(std::vector<Vec3>& predicted) const {
-  accumulateNormalsAndAreas(m_model->cavitySurface, predicted, m_firstParticle, m_normal, m_area);
+void RecordedBeat::findDirections(const std::vector<Vec3>& x, Index first) const {
+  accumulateNormalsAndAreas(m_model->cavitySurface, x, first, m_direction, m_area);
+  for (Vec3d& d : m_direction)
+    if (d.norm() > 0) d.normalize();
+  m_direction = pbd::smoothNormals(std::move(m_direction), m_neighbours, kDirectionSweeps);
+}
+
+void RecordedBeat::placeEpicardium(std::vector<Vec3>& x, Index first) const {
+  findDirections(x, first);
   for (const EpicardialPatch& patch : m_epicardium) {
     const Index vertex = patch.vertex - 1;
-    const Vec3d x = predicted[m_firstParticle + vertex].cast<double>();
-    const Vec3d epicardium = x + thicknessAt(patch, m_area[vertex]) * m_normal[vertex].normalized() + patch.across;
-    predicted[m_firstParticle + patch.vertex] = epicardium.cast<Real>();
+    const Vec3d d = m_direction[vertex];
+    const double area = m_area[vertex];
+    const Vec3d across = std::sqrt(area / patch.restArea) * turned(patch.across, m_restDirection[vertex], d);
+    const Vec3d epicardium = x[first + vertex].cast<double>() + thicknessAt(patch, area) * d + across;
+    x[first + patch.vertex] = epicardium.cast<Real>();
   }
 }
 
-void RecordedBeat::carryVessels(std::vector<Vec3>& predicted) const {
+void RecordedBeat::carryVessels(std::vector<Vec3>& x, Index first) const {
   const std::vector<Vec3>& rest = m_model->mesh.vertices;
-  const auto at = [&](Index v) -> Vec3& { return predicted[m_firstParticle + v]; };
+  const auto at = [&](Index v) -> Vec3& { return x[first + v]; };
   for (const VesselFollower& f : m_vessels) at(f.vertex) = rest[f.vertex] + f.share * (at(f.root) - rest[f.root]);
 }
 
-void RecordedBeat::drive(double time, std::vector<Vec3>& predicted) const {
+void RecordedBeat::drive(double time, std::vector<Vec3>& predicted) const { driveAt(time, predicted, m_firstParticle); }
+
+void RecordedBeat::driveAt(double time, std::vector<Vec3>& x, Index first) const {
   const SplineWeights s = periodicCatmullRom(time, m_period, frameCount());
   for (std::size_t k = 0; k < m_endocardial.size(); ++k) {
-    Vec3d x = m_rest[k].cast<double>();
-    for (int j = 0; j < 4; ++j) x += s.weight[j] * m_offset[s.knot[j]][k].cast<double>();
-    predicted[m_firstParticle + m_endocardial[k]] = x.cast<Real>();
+    Vec3d p = m_rest[k].cast<double>();
+    for (int j = 0; j < 4; ++j) p += s.weight[j] * m_offset[s.knot[j]][k].cast<double>();
+    x[first + m_endocardial[k]] = p.cast<Real>();
   }
-  placeEpicardium(predicted);
-  carryVessels(predicted);
+  placeEpicardium(x, first);
+  carryVessels(x, first);
+}
+
+RecordedFold RecordedBeat::findFold(double dt) const {
+  const pbd::TetMesh& mesh = m_model->mesh;
+  std::vector<std::uint8_t> driven(mesh.vertices.size(), 0);
+  for (Index v : m_driven) driven[v] = 1;
+  const auto allDriven = [&](const auto& corners) {
+    return std::all_of(corners.begin(), corners.end(), [&](Index v) { return driven[v] != 0; });
+  };
+  const auto volume = [](const std::vector<Vec3>& x, const pbd::Tet& t) {
+    return pbd::signedTetVolume(x[t[0]], x[t[1]], x[t[2]], x[t[3]]);
+  };
+  const auto normal = [](const std::vector<Vec3>& x, const pbd::Triangle& t) {
+    return Vec3d((x[t[1]] - x[t[0]]).cast<double>().cross((x[t[2]] - x[t[0]]).cast<double>()));
+  };
+  std::vector<Index> tets, triangles;
+  std::vector<Real> restVolume;
+  std::vector<Vec3d> restNormal;
+  for (Index t = 0; t < Index(mesh.tets.size()); ++t)
+    if (allDriven(mesh.tets[t])) {
+      tets.push_back(t);
+      restVolume.push_back(volume(mesh.vertices, mesh.tets[t]));
+    }
+  for (Index t = 0; t < Index(m_model->cavitySurface.size()); ++t)
+    if (allDriven(m_model->cavitySurface[t])) {
+      triangles.push_back(t);
+      restNormal.push_back(normal(mesh.vertices, m_model->cavitySurface[t]));
+    }
+  RecordedFold fold;
+  std::vector<std::uint8_t> tetFolded(mesh.tets.size(), 0), triangleTurned(m_model->cavitySurface.size(), 0);
+  const auto mark = [&](std::vector<std::uint8_t>& seen, Index id, int& count, Index vertex) {
+    if (seen[id]) return;
+    seen[id] = 1;
+    ++count;
+    fold.segments.push_back(m_model->segment[vertex]);
+  };
+  std::vector<Vec3> x = mesh.vertices;
+  const long steps = std::lround(std::ceil(m_period / dt));
+  for (long k = 0; k < steps; ++k) {
+    const double time = double(k + 1) * dt;  // RecordedBeatMotion's time at the end of step k
+    driveAt(time, x, 0);
+    bool any = false;
+    for (std::size_t j = 0; j < tets.size(); ++j) {
+      const pbd::Tet& tet = mesh.tets[tets[j]];
+      const Real v = volume(x, tet);  // as HeartSimulation::tissueStats counts an inverted tet
+      fold.smallestShare = std::min(fold.smallestShare, double(v) / double(restVolume[j]));
+      if (v > Real(0)) continue;
+      any = true;
+      mark(tetFolded, tets[j], fold.tets, tet[0]);
+    }
+    for (std::size_t j = 0; j < triangles.size(); ++j) {
+      const pbd::Triangle& t = m_model->cavitySurface[triangles[j]];
+      if (normal(x, t).dot(restNormal[j]) > 0) continue;
+      any = true;
+      mark(triangleTurned, triangles[j], fold.triangles, t[0]);
+    }
+    if (!any) continue;
+    const int frame = int(std::lround(std::fmod(time / m_period, 1.0) * frameCount())) % frameCount();
+    if (fold.firstTime < 0) {
+      fold.firstTime = time;
+      fold.firstFrame = fold.lastFrame = frame;
+    }
+    fold.firstFrame = std::min(fold.firstFrame, frame);
+    fold.lastFrame = std::max(fold.lastFrame, frame);
+  }
+  std::sort(fold.segments.begin(), fold.segments.end());
+  fold.segments.erase(std::unique(fold.segments.begin(), fold.segments.end()), fold.segments.end());
+  return fold;
 }
 
 double RecordedBeat::recordedVolume(double time) const {
