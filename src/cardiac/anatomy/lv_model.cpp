@@ -28,6 +28,11 @@ constexpr double kMaxResolution = 8.0;
 // is about 2 radii long; the element size follows the radius, so a needle 1e6 m long would mesh
 // for a minute into millions of elements before anything else could refuse it.
 constexpr double kMaxLengthInRadii = 20.0;
+// The least wall, plate, vessel length and aortic orifice, in cavity radii (validate). The vessel
+// wall's is lower than the meshes need (about 0.006 at resolution 1): thinner walls with wide
+// orifices leave slivers of plate that the plate's size check must still see.
+constexpr double kMinWallInRadii = 0.1, kMinBaseInRadii = 0.05, kMinVesselWallInRadii = 0.001;
+constexpr double kMinVesselLengthInRadii = 0.2, kMinAorticInRadii = 0.1;
 
 // The gap between the orifices and between each orifice and the rim, in units of the vessel
 // wall thickness: the outer walls must leave at least one wall thickness of plate between them.
@@ -118,6 +123,22 @@ void validate(const LvGeometryParams& p) {
                     fmt(kMaxLengthInRadii * double(p.endoRadius)) + " m) for a mesh of the heart's proportions, got " +
                     fmt(value));
   }
+  // The thinnest parts a mesh holds without flat tets, as shares of the cavity's radius: below
+  // them buildLvModel finds a degenerate tet at some resolution from 0.25 to 8 on heart-only's
+  // and normal's sizes (docs/reliability.md); every built-in scenario's parts are thicker.
+  const std::pair<const char*, std::pair<Real, double>> thinnest[] = {
+      {"wall_thickness", {p.wallThickness, kMinWallInRadii}},
+      {"base_thickness", {p.baseThickness, kMinBaseInRadii}},
+      {"vessel_wall_thickness", {p.vesselWallThickness, kMinVesselWallInRadii}},
+      {"inflow_vessel_length", {p.inflowVesselLength, kMinVesselLengthInRadii}},
+      {"outflow_vessel_length", {p.outflowVesselLength, kMinVesselLengthInRadii}},
+      {"aortic_radius", {p.aorticRadius, kMinAorticInRadii}}};
+  for (const auto& [key, valueAndShare] : thinnest) {
+    const auto [value, share] = valueAndShare;
+    if (double(value) < share * double(p.endoRadius))
+      fail(key, "must be at least " + fmt(share) + " x model.endo_radius (" + fmt(share * double(p.endoRadius)) +
+                    " m) for a mesh without flat tets, got " + fmt(value));
+  }
   if (!(p.baseThickness < p.endoLongAxis)) {
     fail("base_thickness", "must be smaller than model.endo_long_axis (" + fmt(p.endoLongAxis) + " m), got " +
                                fmt(p.baseThickness));
@@ -170,7 +191,7 @@ detail::ShellDims makeDims(const LvGeometryParams& p) {
   d.t = p.wallThickness;
   d.baseThickness = p.baseThickness;
   d.vesselWall = p.vesselWallThickness;
-  d.h = kEdgePerRadius * d.a / double(p.resolution);
+  d.h = nominalEdgeLength(p);
   const double gap = (2 * d.a - 2 * double(p.mitralRadius) - 2 * double(p.aorticRadius)) / 3;
   d.plateH = std::min(d.h, gap);
   d.mitral = {{-d.a + gap + double(p.mitralRadius), 0}, p.mitralRadius, p.inflowVesselLength,
@@ -260,6 +281,10 @@ FlowPath flowPathOf(const LvModel& model) {
 }
 
 }  // namespace
+
+double nominalEdgeLength(const LvGeometryParams& params) {
+  return kEdgePerRadius * double(params.endoRadius) / double(params.resolution);
+}
 
 LvModel buildLvModel(const LvGeometryParams& params) {
   validate(params);
