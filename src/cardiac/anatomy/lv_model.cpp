@@ -33,6 +33,7 @@ constexpr double kMaxLengthInRadii = 20.0;
 // orifices leave slivers of plate that the plate's size check must still see.
 constexpr double kMinWallInRadii = 0.1, kMinBaseInRadii = 0.05, kMinVesselWallInRadii = 0.001;
 constexpr double kMinVesselLengthInRadii = 0.2, kMinAorticInRadii = 0.1;
+constexpr double kMaxWallInRadii = 0.5;
 
 // The gap between the orifices and between each orifice and the rim, in units of the vessel
 // wall thickness: the outer walls must leave at least one wall thickness of plate between them.
@@ -139,6 +140,16 @@ void validate(const LvGeometryParams& p) {
       fail(key, "must be at least " + fmt(share) + " x model.endo_radius (" + fmt(share * double(p.endoRadius)) +
                     " m) for a mesh without flat tets, got " + fmt(value));
   }
+  // A wall at most half the cavity's radius (every built-in's is under 0.45): paper-chamber-beating
+  // with a wall as thick as its radius inverted a tet within 4 steps of the beat, at 0.5 it beats.
+  if (double(p.wallThickness) > kMaxWallInRadii * double(p.endoRadius))
+    fail("wall_thickness", "must be at most " + fmt(kMaxWallInRadii) + " x model.endo_radius (" +
+                               fmt(kMaxWallInRadii * double(p.endoRadius)) + " m), got " + fmt(p.wallThickness));
+  // A cavity at least as long as it is wide (even a dilated ventricle's is about twice): a
+  // shorter one leaves flat tets at the apex (dilated-cardiomyopathy at 0.005 m, 0.125 radii).
+  if (p.endoLongAxis < p.endoRadius)
+    fail("endo_long_axis", "must be at least model.endo_radius (" + fmt(p.endoRadius) + " m), got " +
+                               fmt(p.endoLongAxis));
   if (!(p.baseThickness < p.endoLongAxis)) {
     fail("base_thickness", "must be smaller than model.endo_long_axis (" + fmt(p.endoLongAxis) + " m), got " +
                                fmt(p.baseThickness));
@@ -292,9 +303,22 @@ LvModel buildLvModel(const LvGeometryParams& params) {
   try {
     return buildValidatedLvModel(params);
   } catch (const std::logic_error& e) {
-    // Each parameter passed its own check, but together they leave no room for a valid mesh.
-    throw std::invalid_argument(std::string("model: these parameters give no valid mesh (") + e.what() +
-                                "); change the [model] sizes");
+    // Each parameter passed its own check, but together they leave no room for a valid mesh. When
+    // the same sizes mesh at the thesis's resolution, the resolution is the key to change (the
+    // real-size hearts' thin vessel walls at the coarsest, a thick wall at the finest).
+    std::string remedy = "change the [model] sizes";
+    if (params.resolution != Real(1)) {
+      LvGeometryParams atOne = params;
+      atOne.resolution = 1;
+      try {
+        buildLvModel(atOne);
+        remedy = "they mesh at model.resolution = 1, so bring model.resolution (" + fmt(params.resolution) +
+                 ") nearer 1, or change the [model] sizes";
+      } catch (const std::invalid_argument&) {  // the sizes alone: the first remedy stands
+      }
+    }
+    throw std::invalid_argument(std::string("model: these parameters give no valid mesh (") + e.what() + "); " +
+                                remedy);
   }
 }
 

@@ -101,12 +101,12 @@ std::vector<KeySpec> tissueKeys() {
   return {
       realKey("tissue.stiffness", HS_FIELD(tissue.stiffness), between(0, 1), "",
               "PBD stiffness k of the wall's area and edge constraints (0 = limp, 1 = rigid)."),
-      realKey("tissue.volume_stiffness", HS_FIELD(tissue.volumeStiffness), between(0.1, 1), "",
-              "PBD stiffness k of the tet volume constraints (1 = incompressible myocardium; below 0.1 the "
-              "thesis's beat inverts heart-only's tets within 20 steps)."),
-      realKey("tissue.volume_compliance", HS_FIELD(tissue.volumeCompliance), between(0, 1e-7), "m^3/Pa",
-              "XPBD compliance of the tet volume constraints (0 = plain PBD; above 1e-7 heart-only's wall gives "
-              "up its volume to the beat and its tets invert within 20 steps)."),
+      realKey("tissue.volume_stiffness", HS_FIELD(tissue.volumeStiffness), between(0.25, 1), "",
+              "PBD stiffness k of the tet volume constraints (1 = incompressible myocardium; at 0.1 the "
+              "thesis's beat inverts paper-chamber-beating's tets within 20 steps)."),
+      realKey("tissue.volume_compliance", HS_FIELD(tissue.volumeCompliance), between(0, 1e-9), "m^3/Pa",
+              "XPBD compliance of the tet volume constraints (0 = plain PBD; at 1e-8 paper-chamber-beating's wall "
+              "gives up its volume to the beat and its tets invert within 20 steps)."),
       realKey("tissue.area_compliance", HS_FIELD(tissue.areaCompliance), between(0, 1), "m^3/N",
               "XPBD compliance of the surface area constraints (0 = plain PBD; from 1e-3 on as good as off)."),
       realKey("tissue.edge_compliance", HS_FIELD(tissue.edgeCompliance), between(0, 1), "m/N",
@@ -213,10 +213,12 @@ std::vector<KeySpec> bloodKeys() {
               "Particle spacing at rest (normally 2 radii); particle mass = rest_density spacing^3."),
       realKey("blood.support_radius", HS_FIELD(blood.supportRadius), between(1e-4, 2), kMetres,
               "SPH kernel support radius h, larger than the spacing (thesis 0.32 m = 2 spacings)."),
-      realKey("blood.rest_density", HS_FIELD(blood.restDensity), between(1, 100000), "kg/m^3",
-              "Density at rest (thesis 1000; blood 1060)."),
-      realKey("blood.viscosity", HS_FIELD(blood.viscosity), between(0, 1000), "Pa s",
-              "Dynamic viscosity (thesis 0.04; blood 0.0035; water 0.001)."),
+      realKey("blood.rest_density", HS_FIELD(blood.restDensity), between(500, 100000), "kg/m^3",
+              "Density at rest (thesis 1000; blood 1060); at least 500, the lightest liquids' (at 1 a real-size "
+              "heart lost blood within 20 steps)."),
+      realKey("blood.viscosity", HS_FIELD(blood.viscosity), between(0, 100), "Pa s",
+              "Dynamic viscosity (thesis 0.04; blood 0.0035; water 0.001); at most 100 (at 1000 paper-chamber-beating "
+              "lost blood within 15 steps)."),
       realKey("blood.xsph", HS_FIELD(blood.xsph), between(0, 0.95), "",
               "XSPH smoothing gamma of thesis eq. 4.11 (0 = off; below 1 for stability)."),
       intKey("blood.iterations", HS_FIELD(blood.iterations), 1, "", "Density solver iterations per step.",
@@ -238,8 +240,9 @@ std::vector<KeySpec> bloodKeys() {
       intKey("blood.tensile_n", HS_FIELD(blood.tensileN), 1, "", "s_corr exponent n (PBF: 4).", 16),
       realKey("blood.tensile_dq", HS_FIELD(blood.tensileDeltaQ), between(0.01, 0.99), "",
               "s_corr reference distance, as a fraction of the support radius (PBF: 0.1-0.3)."),
-      realKey("blood.vorticity", HS_FIELD(blood.vorticity), between(0, 1000), "m/s",
-              "Vorticity confinement epsilon (PBF eq. 16); 0 = off."),
+      realKey("blood.vorticity", HS_FIELD(blood.vorticity), between(0, 10), "m/s",
+              "Vorticity confinement epsilon (PBF eq. 16); 0 = off. At most 10: at 100 the real-size hearts lose "
+              "blood through the wall within 4 steps."),
       choiceKey("blood.start", HS_FIELD(blood.start), starts,
                 "Where the blood starts: \"block\" (block_min..block_max), \"chamber\" (the LV cavity) or "
                 "\"vessel\" (the inflow vessel, then the cavity from the base down if it holds more)."),

@@ -392,6 +392,7 @@ TEST(LvModel, BadParametersThrowNamingTheKey) {
       {"model.vessel_wall_thickness", [](LvGeometryParams& p) { p.vesselWallThickness = 0.001f; }},  // < 0.001
       {"model.outflow_vessel_length", [](LvGeometryParams& p) { p.outflowVesselLength = 0.39f; }},   // < 0.2
       {"model.aortic_radius", [](LvGeometryParams& p) { p.aorticRadius = 0.19f; }},            // < 0.1
+      {"model.endo_long_axis", [](LvGeometryParams& p) { p.endoLongAxis = 1.9f; }},           // < 1
   };
   for (const Case& c : cases) {
     LvGeometryParams p;

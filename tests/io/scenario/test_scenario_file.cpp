@@ -219,8 +219,8 @@ std::vector<KeyCase> everyKeyCase() {
       {"simulation.volume_passes", "5", [](const Scenario& s) { return s.simulation.volumePasses == 5; }},
       {"tissue.stiffness", "0.75", [](const Scenario& s) { return s.tissue.stiffness == Real(0.75); }},
       {"tissue.volume_stiffness", "0.25", [](const Scenario& s) { return s.tissue.volumeStiffness == Real(0.25); }},
-      {"tissue.volume_compliance", "1e-8",
-       [](const Scenario& s) { return s.tissue.volumeCompliance == Real(1e-8); }},
+      {"tissue.volume_compliance", "5e-10",
+       [](const Scenario& s) { return s.tissue.volumeCompliance == Real(5e-10); }},
       {"tissue.area_compliance", "2e-6",
        [](const Scenario& s) { return s.tissue.areaCompliance == Real(2e-6); }},
       {"tissue.edge_compliance", "3e-6",
@@ -270,7 +270,7 @@ std::vector<KeyCase> everyKeyCase() {
        [](const Scenario& s) { return s.cycle.inconsistentPhaseOffset == Real(0.25); }},
       {"blood.enabled", "true", [](const Scenario& s) { return s.blood.enabled; }},
       {"blood.particles", "5000", [](const Scenario& s) { return s.blood.particles == 5000; }},
-      {"blood.radius", "0.07", [](const Scenario& s) { return s.blood.radius == Real(0.07); }},
+      {"blood.radius", "0.09", [](const Scenario& s) { return s.blood.radius == Real(0.09); }},
       {"blood.spacing", "0.15", [](const Scenario& s) { return s.blood.spacing == Real(0.15); }},
       {"blood.support_radius", "0.4", [](const Scenario& s) { return s.blood.supportRadius == Real(0.4); }},
       {"blood.rest_density", "1060", [](const Scenario& s) { return s.blood.restDensity == Real(1060); }},
@@ -517,6 +517,13 @@ TEST(ScenarioErrors, ABeatStepLongerThanTheWallsEdgeIsRefused) {
   EXPECT_NO_THROW(loadScenario("heart-only", {"model.resolution=8", "cycle.beating_displace=0.023"}));
   // Another mode's beat does not use the key.
   EXPECT_NO_THROW(loadScenario("heart-only", {"model.resolution=8", "cycle.mode=physiological"}));
+}
+
+// Under half the spacing the wall holds particles closer than their lattice and blood leaks.
+TEST(ScenarioErrors, ARadiusUnderHalfTheSpacingIsRefused) {
+  expectParseError("", {"--set blood.radius=0.07: blood.radius: must be at least half blood.spacing (0.08 m)"},
+                   {"blood.radius=0.07"});
+  EXPECT_NO_THROW(parseScenario("", "lesson.toml", {"blood.radius=0.08"}));
 }
 
 TEST(ScenarioErrors, SupportRadiusBeyondTheBloodsRoomIsRefused) {
