@@ -240,9 +240,9 @@ std::vector<KeySpec> bloodKeys() {
       intKey("blood.tensile_n", HS_FIELD(blood.tensileN), 1, "", "s_corr exponent n (PBF: 4).", 16),
       realKey("blood.tensile_dq", HS_FIELD(blood.tensileDeltaQ), between(0.01, 0.99), "",
               "s_corr reference distance, as a fraction of the support radius (PBF: 0.1-0.3)."),
-      realKey("blood.vorticity", HS_FIELD(blood.vorticity), between(0, 10), "m/s",
-              "Vorticity confinement epsilon (PBF eq. 16); 0 = off. At most 10: at 100 the real-size hearts lose "
-              "blood through the wall within 4 steps."),
+      realKey("blood.vorticity", HS_FIELD(blood.vorticity), between(0, 1), "m/s",
+              "Vorticity confinement epsilon (PBF eq. 16); 0 = off. At most 1: at 10 idealized-lv loses blood "
+              "through the wall within 20 steps (3 runs), at 100 every real-size heart within 4."),
       choiceKey("blood.start", HS_FIELD(blood.start), starts,
                 "Where the blood starts: \"block\" (block_min..block_max), \"chamber\" (the LV cavity) or "
                 "\"vessel\" (the inflow vessel, then the cavity from the base down if it holds more)."),
