@@ -13,4 +13,13 @@ set(HS_LONG_TESTS
     CliLumped.AWallThatCannotReachTheLumpedVolumeIsNamedInTheSummaryLine
     CliCheckpoint.IrregularResumedGivesTheUninterruptedRun
     CliLumped.NormalLumpedGivesAHeartsPressuresAndItsPlots)
-set_tests_properties(${HS_LONG_TESTS} PROPERTIES LABELS long)
+# Every number key of every built-in scenario at its extremes, 20 steps each
+# (tests/io/scenario/test_scenario_extremes.cpp): one test per built-in, picked from the discovered
+# list so that a new built-in is labelled too.
+set(HS_EXTREMES_TESTS)
+foreach(test IN LISTS hs_io_tests_TESTS)
+  if(test MATCHES "^Builtins/ScenarioExtremes\\.")
+    list(APPEND HS_EXTREMES_TESTS ${test})
+  endif()
+endforeach()
+set_tests_properties(${HS_LONG_TESTS} ${HS_EXTREMES_TESTS} PROPERTIES LABELS long)

@@ -77,16 +77,17 @@ TEST(CliBlood, DamBreakSameStateForOneAndTwoThreadsAndNothingLost) {
 }
 
 TEST(CliBlood, BadFluidParametersExitTwoNamingTheKey) {
-  expectBadFluidInput("run fluid-at-rest --set blood.spacing=0", {"blood.spacing", "> 0"});
+  expectBadFluidInput("run fluid-at-rest --set blood.spacing=0", {"blood.spacing", ">= 1e-04"});
   expectBadFluidInput("run fluid-at-rest --set blood.spacing=-0.01", {"blood.spacing"});
   expectBadFluidInput("run fluid-at-rest --set blood.support_radius=0.004", {"blood.support_radius", "blood.spacing"});
   // A kernel support radius in the file smaller than the spacing names the file and line.
   expectBadFluidInput("run fluid-at-rest --set blood.radius=0", {"blood.radius"});
   expectBadFluidInput("run fluid-at-rest --set blood.particles=20000000", {"blood.particles"});
-  // Filling the block at a tiny spacing: far beyond this machine's memory (without gravity,
-  // which at this spacing would be refused first: it moves a particle its spacing per step).
-  expectBadFluidInput("run fluid-at-rest --set blood.spacing=0.00001 --set blood.support_radius=0.00002 "
-                      "--set blood.radius=0.000005 --set 'simulation.gravity=[0,0,0]'",
+  // Filling the block at the least spacing the reader takes: far beyond this machine's memory
+  // (without gravity, which at this spacing would be refused first: it moves a particle its
+  // spacing per step).
+  expectBadFluidInput("run fluid-at-rest --set blood.spacing=0.0001 --set blood.support_radius=0.0002 "
+                      "--set blood.radius=0.0001 --set 'simulation.gravity=[0,0,0]'",
                       {"blood", "GB", "blood.spacing"});
   expectBadFluidInput("run fluid-at-rest --set blood.particles=5000", {"blood.particles", "holds 2000"});
   expectBadFluidInput("run fluid-at-rest --set blood.viscosity=100", {"blood.viscosity", "dt"});

@@ -28,6 +28,12 @@ constexpr double kMaxResolution = 8.0;
 // is about 2 radii long; the element size follows the radius, so a needle 1e6 m long would mesh
 // for a minute into millions of elements before anything else could refuse it.
 constexpr double kMaxLengthInRadii = 20.0;
+// The least wall, plate, vessel length and aortic orifice, in cavity radii (validate). The vessel
+// wall's is lower than the meshes need (about 0.006 at resolution 1): thinner walls with wide
+// orifices leave slivers of plate that the plate's size check must still see.
+constexpr double kMinWallInRadii = 0.1, kMinBaseInRadii = 0.05, kMinVesselWallInRadii = 0.001;
+constexpr double kMinVesselLengthInRadii = 0.2, kMinAorticInRadii = 0.1;
+constexpr double kMaxWallInRadii = 0.5;
 
 // The gap between the orifices and between each orifice and the rim, in units of the vessel
 // wall thickness: the outer walls must leave at least one wall thickness of plate between them.
@@ -118,6 +124,32 @@ void validate(const LvGeometryParams& p) {
                     fmt(kMaxLengthInRadii * double(p.endoRadius)) + " m) for a mesh of the heart's proportions, got " +
                     fmt(value));
   }
+  // The thinnest parts a mesh holds without flat tets, as shares of the cavity's radius: below
+  // them buildLvModel finds a degenerate tet at some resolution from 0.25 to 8 on heart-only's
+  // and normal's sizes (docs/reliability.md); every built-in scenario's parts are thicker.
+  const std::pair<const char*, std::pair<Real, double>> thinnest[] = {
+      {"wall_thickness", {p.wallThickness, kMinWallInRadii}},
+      {"base_thickness", {p.baseThickness, kMinBaseInRadii}},
+      {"vessel_wall_thickness", {p.vesselWallThickness, kMinVesselWallInRadii}},
+      {"inflow_vessel_length", {p.inflowVesselLength, kMinVesselLengthInRadii}},
+      {"outflow_vessel_length", {p.outflowVesselLength, kMinVesselLengthInRadii}},
+      {"aortic_radius", {p.aorticRadius, kMinAorticInRadii}}};
+  for (const auto& [key, valueAndShare] : thinnest) {
+    const auto [value, share] = valueAndShare;
+    if (double(value) < share * double(p.endoRadius))
+      fail(key, "must be at least " + fmt(share) + " x model.endo_radius (" + fmt(share * double(p.endoRadius)) +
+                    " m) for a mesh without flat tets, got " + fmt(value));
+  }
+  // A wall at most half the cavity's radius (every built-in's is under 0.45): paper-chamber-beating
+  // with a wall as thick as its radius inverted a tet within 4 steps of the beat, at 0.5 it beats.
+  if (double(p.wallThickness) > kMaxWallInRadii * double(p.endoRadius))
+    fail("wall_thickness", "must be at most " + fmt(kMaxWallInRadii) + " x model.endo_radius (" +
+                               fmt(kMaxWallInRadii * double(p.endoRadius)) + " m), got " + fmt(p.wallThickness));
+  // A cavity at least as long as it is wide (even a dilated ventricle's is about twice): a
+  // shorter one leaves flat tets at the apex (dilated-cardiomyopathy at 0.005 m, 0.125 radii).
+  if (p.endoLongAxis < p.endoRadius)
+    fail("endo_long_axis", "must be at least model.endo_radius (" + fmt(p.endoRadius) + " m), got " +
+                               fmt(p.endoLongAxis));
   if (!(p.baseThickness < p.endoLongAxis)) {
     fail("base_thickness", "must be smaller than model.endo_long_axis (" + fmt(p.endoLongAxis) + " m), got " +
                                fmt(p.baseThickness));
@@ -170,7 +202,7 @@ detail::ShellDims makeDims(const LvGeometryParams& p) {
   d.t = p.wallThickness;
   d.baseThickness = p.baseThickness;
   d.vesselWall = p.vesselWallThickness;
-  d.h = kEdgePerRadius * d.a / double(p.resolution);
+  d.h = nominalEdgeLength(p);
   const double gap = (2 * d.a - 2 * double(p.mitralRadius) - 2 * double(p.aorticRadius)) / 3;
   d.plateH = std::min(d.h, gap);
   d.mitral = {{-d.a + gap + double(p.mitralRadius), 0}, p.mitralRadius, p.inflowVesselLength,
@@ -261,15 +293,32 @@ FlowPath flowPathOf(const LvModel& model) {
 
 }  // namespace
 
+double nominalEdgeLength(const LvGeometryParams& params) {
+  return kEdgePerRadius * double(params.endoRadius) / double(params.resolution);
+}
+
 LvModel buildLvModel(const LvGeometryParams& params) {
   validate(params);
   validateVesselClearance(makeDims(params));
   try {
     return buildValidatedLvModel(params);
   } catch (const std::logic_error& e) {
-    // Each parameter passed its own check, but together they leave no room for a valid mesh.
-    throw std::invalid_argument(std::string("model: these parameters give no valid mesh (") + e.what() +
-                                "); change the [model] sizes");
+    // Each parameter passed its own check, but together they leave no room for a valid mesh. When
+    // the same sizes mesh at the thesis's resolution, the resolution is the key to change (the
+    // real-size hearts' thin vessel walls at the coarsest, a thick wall at the finest).
+    std::string remedy = "change the [model] sizes";
+    if (params.resolution != Real(1)) {
+      LvGeometryParams atOne = params;
+      atOne.resolution = 1;
+      try {
+        buildLvModel(atOne);
+        remedy = "they mesh at model.resolution = 1, so bring model.resolution (" + fmt(params.resolution) +
+                 ") nearer 1, or change the [model] sizes";
+      } catch (const std::invalid_argument&) {  // the sizes alone: the first remedy stands
+      }
+    }
+    throw std::invalid_argument(std::string("model: these parameters give no valid mesh (") + e.what() + "); " +
+                                remedy);
   }
 }
 

@@ -90,6 +90,9 @@ struct LvModel {
 // Builds the model; throws std::invalid_argument with a one-line message for bad parameters.
 LvModel buildLvModel(const LvGeometryParams& params);
 
+// The edge length (m) the model's wall is meshed at: 0.21 endo_radius / resolution.
+double nominalEdgeLength(const LvGeometryParams& params);
+
 // Cavity volume (m^3) for the current vertex positions: cavitySurface plus a fan over each
 // orifice ring, by the divergence theorem.
 Real cavityVolume(const LvModel& model, const std::vector<Vec3>& positions);

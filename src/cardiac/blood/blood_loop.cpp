@@ -57,7 +57,22 @@ void BloodLoop::park(pbd::Particles& particles, Index particle) {
 
 void BloodLoop::startWaiting(pbd::Particles& particles, Index first, std::size_t count) {
   const std::size_t n = particles.size() - first;
-  for (std::size_t k = n - count; k < n; ++k) park(particles, Index(first + k));
+  // A lot without a free slot fills at its end, where park's search from the first slot would
+  // land after reading the whole lot: quadratic in `count`, hours for a million. The same slots,
+  // taken in the same order, without the search.
+  const bool full = std::find(m_lot.begin(), m_lot.end(), kFreeSlot) == m_lot.end();
+  for (std::size_t k = n - count; k < n; ++k) {
+    const Index particle = Index(first + k);
+    if (!full) {
+      park(particles, particle);
+      continue;
+    }
+    m_lot.push_back(particles.id[particle]);
+    m_queue.push_back(particles.id[particle]);
+    particles.position[particle] = particles.predicted[particle] = parkingSite(m_lot.size() - 1);
+    particles.velocity[particle] = Vec3::Zero();
+    particles.state[particle] = pbd::ParticleState::Parked;
+  }
 }
 
 BloodLoop::Turnover BloodLoop::circulate(pbd::Particles& particles, Index first) {

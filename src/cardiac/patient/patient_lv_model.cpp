@@ -137,6 +137,8 @@ PatientWall buildPatientShell(const PatientModelSettings& patient, Real wallThic
   s.mitralLoop = patient.mitralLoop;
   s.aorticLoop = patient.aorticLoop;
   if (patient.septum != Vec3::Zero()) s.septum = patient.septum.cast<double>();
+  s.mitralLoopName = "model.mitral_loop", s.aorticLoopName = "model.aortic_loop";
+  s.septumName = "model.septum, the septum direction,";
   const Surface* epicardium = patient.epicardiumSurface ? &*patient.epicardiumSurface : nullptr;
   return buildPatientWall(patient.endocardiumSurface, epicardium, s);
 }

@@ -68,15 +68,15 @@ std::pair<std::size_t, std::size_t> chooseAnnuli(const std::vector<detail::LoopS
       fail(s.file, std::string(key) + " " + std::to_string(number) + ": expected a loop number in [1, " +
                        std::to_string(shapes.size()) + "]");
   };
-  checkNumber(s.mitralLoop, "mitral loop");
-  checkNumber(s.aorticLoop, "aortic loop");
+  checkNumber(s.mitralLoop, s.mitralLoopName.c_str());
+  checkNumber(s.aorticLoop, s.aorticLoopName.c_str());
   const std::size_t larger = shapes[0].vectorArea.norm() >= shapes[1].vectorArea.norm() ? 0 : 1;
   std::size_t mitral = larger, aortic = 1 - larger;
   if (s.mitralLoop > 0) mitral = static_cast<std::size_t>(s.mitralLoop - 1), aortic = 1 - mitral;
   if (s.aorticLoop > 0)
     aortic = static_cast<std::size_t>(s.aorticLoop - 1), mitral = s.mitralLoop > 0 ? mitral : 1 - aortic;
   if (mitral == aortic)
-    fail(s.file, "mitral loop and aortic loop are both loop " + std::to_string(mitral + 1) +
+    fail(s.file, s.mitralLoopName + " and " + s.aorticLoopName + " are both loop " + std::to_string(mitral + 1) +
                      "; expected two different loops");
   return {mitral, aortic};
 }
@@ -96,10 +96,10 @@ Vec3d longAxis(const Surface& s, const Vec3d& baseCentre) {
 }
 
 HeartFrame frameOf(const Vec3d& y, const Vec3d& baseCentre, const Vec3d& septumHint, double metresPerUnit,
-                   const std::string& file) {
+                   const std::string& file, const std::string& septumName) {
   const Vec3d septum = septumHint - y * y.dot(septumHint);
   if (septumHint.norm() == 0 || septum.norm() < 1e-6 * septumHint.norm())
-    fail(file, "the septum direction lies along the long axis; expected one across it");
+    fail(file, septumName + " lies along the long axis; expected one across it");
   // The file's septal and anterior directions across the long axis become the heart frame's
   // kSeptal and kAnterior (aha_segments.h): row k of the rotation is the file direction of the
   // frame's axis k, kAnterior_k anterior + kSeptal_k septal (the septum, the long axis and the
@@ -268,7 +268,8 @@ PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardi
     septumHint = shapes[aortic].centroid - shapes[mitral].centroid;
   } else {
     if (settings.mitralLoop > 1 || settings.aorticLoop > 0)
-      fail(file, "annulus loops given, but the surface has 1 boundary loop (a flat truncated base)");
+      fail(file, settings.mitralLoopName + " or " + settings.aorticLoopName +
+                     " given, but the surface has 1 boundary loop (a flat truncated base)");
     // An axisymmetric ventricle has no septum of its own: the file axis most across the long axis.
     const Vec3d axis = principalAxis(s.vertices);
     int across = 0;
@@ -291,7 +292,8 @@ PatientWall buildPatientWall(const Surface& endocardium, const Surface* epicardi
     if (biventricularEpicardium) septumHint = rv, wall.septumFrom = "right ventricle";
   }
   if (settings.septum) septumHint = *settings.septum, wall.septumFrom = "setting";
-  wall.frame = frameOf(y, baseCentre, septumHint, metresPerUnit, file);
+  wall.frame = frameOf(y, baseCentre, septumHint, metresPerUnit, file,
+                       settings.septum ? settings.septumName : std::string("the septum direction"));
   for (Vec3& p : s.vertices)
     p = (wall.frame.rotation * (p.cast<double>() - wall.frame.origin)).cast<pbd::Real>();
   std::vector<Vec3d> annulusCentres;

@@ -68,6 +68,8 @@ struct PatientWallSettings {
   // by size (the mitral is the larger).
   int mitralLoop = 0, aorticLoop = 0;
   std::optional<Vec3d> septum;  // direction toward the septum, in the file's frame
+  // How errors name the loop numbers and the septum: heartsim mesh's words, or a scenario's keys.
+  std::string mitralLoopName = "mitral loop", aorticLoopName = "aortic loop", septumName = "the septum direction";
 };
 
 // The rigid placement: heart = rotation * (metres * file - origin).

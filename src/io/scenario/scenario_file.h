@@ -13,6 +13,7 @@
 // Every error is a ScenarioError whose message is one line naming the file (or "--set ..."),
 // the line number where known, the key, what was expected and what was got, e.g.
 //   scenarios/x.toml:12: simulation.dt: must be a finite number > 0 and <= 0.1 (s), got -0.01
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -40,6 +41,17 @@ std::vector<std::string> builtinScenarioNames();
 // The embedded file text; throws ScenarioError if the name is unknown.
 std::string builtinScenarioText(const std::string& name);
 
+// The interval a number key accepts (for an array of numbers, each of its `components`), so that
+// a test can try every key at its extremes; the table's single source (scenario_keys.cpp).
+struct ScenarioKeyBounds {
+  double lo = 0;
+  double hi = 0;
+  bool loOpen = false;  // "> lo" rather than ">= lo"
+  bool hiOpen = false;
+  bool integer = false;  // whole numbers only
+  int components = 1;    // 3: an array of 3 numbers, each within [lo, hi]
+};
+
 // The key table, for documentation and `--help`-style listings. One entry per key, in file
 // order.
 struct ScenarioKeyInfo {
@@ -49,6 +61,7 @@ struct ScenarioKeyInfo {
   std::string range;         // allowed values in words, e.g. "> 0 and <= 0.1"
   std::string defaultValue;  // TOML text of the default-constructed Scenario's value
   std::string doc;           // one-sentence meaning
+  std::optional<ScenarioKeyBounds> bounds;  // numbers, integers and arrays of 3 numbers only
 };
 std::vector<ScenarioKeyInfo> scenarioKeys();
 

@@ -5,12 +5,14 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "cardiac/scenario.h"
+#include "io/scenario/scenario_file.h"
 #include "pbd/core/state_stream.h"
 
 namespace hs::io::detail {
@@ -30,6 +32,7 @@ struct KeySpec {
   std::string expect;  // "a finite number > 0 and <= 0.1 (s)"
   std::string doc;
   bool stringLike = false;  // string or choice: a --set VALUE that is not TOML is taken literally
+  std::optional<ScenarioKeyBounds> bounds;  // what a number, integer or vec3 key accepts
   std::function<void(cardiac::Scenario&, const toml::node&)> set;  // throws ValueError
   std::function<std::string(const cardiac::Scenario&)> get;        // TOML text of the value
   // The field's exact value for checkpoints (io/output/checkpoint.h), which the TOML text need not

@@ -30,6 +30,9 @@ struct Range {
   bool hiOpen = false;
 
   bool contains(double v) const { return (loOpen ? v > lo : v >= lo) && (hiOpen ? v < hi : v <= hi); }
+  ScenarioKeyBounds bounds(bool integer = false, int components = 1) const {
+    return {lo, hi, loOpen, hiOpen, integer, components};
+  }
   std::string text() const {
     std::string t;
     if (std::isfinite(lo)) t += (loOpen ? "> " : ">= ") + formatNumber(lo);
@@ -118,6 +121,7 @@ template <class F>
 KeySpec clinicalKey(std::string name, F field, double toSi, Range range, std::string unit, std::string doc) {
   KeySpec k = makeSpec(std::move(name), "number", std::move(unit), range.text(), std::move(doc));
   k.expect = withUnit("a finite number" + spaced(k.range), k.unit);
+  k.bounds = range.bounds();
   k.set = [field, toSi, range, expect = k.expect](Scenario& s, const toml::node& n) {
     using T = std::remove_reference_t<decltype(field(s))>;
     field(s) = static_cast<T>(double(readReal(n, range, expect)) * toSi);
@@ -144,6 +148,7 @@ KeySpec intKey(std::string name, F field, std::int64_t lo, std::string unit, std
   // The message names the real limit even where the documented range leaves it out (the
   // field's type).
   k.expect = withUnit("an integer >= " + std::to_string(lo) + " and <= " + std::to_string(hi), k.unit);
+  k.bounds = ScenarioKeyBounds{double(lo), double(hi), false, false, true, 1};
   k.set = [field, lo, hi, expect = k.expect](Scenario& s, const toml::node& n) {
     field(s) = static_cast<T>(readInt(n, lo, hi, expect));
   };
@@ -210,18 +215,20 @@ KeySpec choiceKey(std::string name, F field, std::vector<std::pair<std::string, 
   return k;
 }
 
+// An array of 3 numbers, each within `range` (a position, a direction, an acceleration).
 template <class F>
-KeySpec vec3Key(std::string name, F field, std::string unit, std::string doc) {
-  KeySpec k = makeSpec(std::move(name), "array of 3 numbers", std::move(unit), "each finite", std::move(doc));
-  k.expect = withUnit("an array of 3 finite numbers", k.unit);
-  k.set = [field, expect = k.expect](Scenario& s, const toml::node& n) {
+KeySpec vec3Key(std::string name, F field, Range range, std::string unit, std::string doc) {
+  KeySpec k = makeSpec(std::move(name), "array of 3 numbers", std::move(unit), "each " + range.text(), std::move(doc));
+  k.expect = withUnit("an array of 3 finite numbers, each " + range.text(), k.unit);
+  k.bounds = range.bounds(false, 3);
+  k.set = [field, range, expect = k.expect](Scenario& s, const toml::node& n) {
     const auto* a = n.as_array();
     if (!a) throw ValueError{"expected " + expect + ", got " + describeNode(n)};
     Vec3 v = Vec3::Zero();
     bool ok = a->size() == 3;
     for (std::size_t i = 0; ok && i < 3; ++i) {
       double x = 0;
-      ok = numberOf(*a->get(i), x) && std::isfinite(x) && std::isfinite(static_cast<Real>(x));
+      ok = numberOf(*a->get(i), x) && std::isfinite(x) && range.contains(x) && std::isfinite(static_cast<Real>(x));
       v[static_cast<Eigen::Index>(i)] = static_cast<Real>(x);
     }
     if (!ok) throw ValueError{"must be " + expect + ", got " + describeNode(n)};

@@ -25,6 +25,12 @@ using cardiac::BeatPattern;
 using cardiac::TimingMode;
 
 constexpr const char* kMetres = "m";
+// Every number key has finite bounds, and at each of them every built-in scenario either runs or
+// is refused naming a key (tests/io/scenario/test_scenario_extremes.cpp): gravity up to about
+// 10 g; positions within 100 m of the origin, fifty times the largest heart (the thesis's, 2 m
+// across); the model's lengths from 0.5-5 mm, a mouse's heart, to 1-10 m, past the thesis's.
+constexpr double kMaxGravity = 100;      // m/s^2
+constexpr double kMaxCoordinate = 100;   // m
 
 // [scenario]
 std::vector<KeySpec> scenarioKeys() {
@@ -47,8 +53,9 @@ std::vector<KeySpec> simulationKeys() {
              "Constraint solver iterations per step (more = stiffer, slower).", 1000),
       intKey("simulation.volume_passes", HS_FIELD(simulation.volumePasses), 0, "",
              "Extra sweeps of the wall's volume constraints after the iterations (incompressibility).", 1000),
-      vec3Key("simulation.gravity", HS_FIELD(simulation.gravity), "m/s^2",
-              "Gravity [x, y, z]; y is the long axis (apex at -y, vessels at +y)."),
+      vec3Key("simulation.gravity", HS_FIELD(simulation.gravity), between(-kMaxGravity, kMaxGravity), "m/s^2",
+              "Gravity [x, y, z]; y is the long axis (apex at -y, vessels at +y); each at most about 10 g, more "
+              "than a body bears."),
   };
 }
 
@@ -57,28 +64,28 @@ std::vector<KeySpec> modelKeys() {
   return {
       boolKey("model.enabled", HS_FIELD(heart),
               "Whether the heart wall exists (false: blood in a container only, e.g. dam-break)."),
-      realKey("model.endo_radius", HS_FIELD(geometry.endoRadius), gt(0), kMetres,
+      realKey("model.endo_radius", HS_FIELD(geometry.endoRadius), between(0.005, 5), kMetres,
               "Short-axis radius of the cavity at the base plane."),
-      realKey("model.endo_long_axis", HS_FIELD(geometry.endoLongAxis), gt(0), kMetres,
+      realKey("model.endo_long_axis", HS_FIELD(geometry.endoLongAxis), between(0.005, 10), kMetres,
               "Cavity length from the base plane to the inner apex."),
-      realKey("model.wall_thickness", HS_FIELD(geometry.wallThickness), gt(0), kMetres,
+      realKey("model.wall_thickness", HS_FIELD(geometry.wallThickness), between(0.001, 2), kMetres,
               "Myocardium thickness (also at the apex)."),
-      realKey("model.base_thickness", HS_FIELD(geometry.baseThickness), gt(0), kMetres,
+      realKey("model.base_thickness", HS_FIELD(geometry.baseThickness), between(0.001, 2), kMetres,
               "Thickness of the base plate that holds the valves."),
-      realKey("model.mitral_radius", HS_FIELD(geometry.mitralRadius), gt(0), kMetres,
+      realKey("model.mitral_radius", HS_FIELD(geometry.mitralRadius), between(0.001, 2), kMetres,
               "Inflow (mitral) orifice and vessel lumen radius."),
-      realKey("model.aortic_radius", HS_FIELD(geometry.aorticRadius), gt(0), kMetres,
+      realKey("model.aortic_radius", HS_FIELD(geometry.aorticRadius), between(0.001, 2), kMetres,
               "Outflow (aortic) orifice and vessel lumen radius."),
-      realKey("model.vessel_wall_thickness", HS_FIELD(geometry.vesselWallThickness), gt(0), kMetres,
+      realKey("model.vessel_wall_thickness", HS_FIELD(geometry.vesselWallThickness), between(0.0005, 1), kMetres,
               "Wall thickness of both vessels."),
-      realKey("model.inflow_vessel_length", HS_FIELD(geometry.inflowVesselLength), gt(0), kMetres,
+      realKey("model.inflow_vessel_length", HS_FIELD(geometry.inflowVesselLength), between(0.001, 10), kMetres,
               "Inflow vessel length above the base plate."),
-      realKey("model.outflow_vessel_length", HS_FIELD(geometry.outflowVesselLength), gt(0), kMetres,
+      realKey("model.outflow_vessel_length", HS_FIELD(geometry.outflowVesselLength), between(0.001, 10), kMetres,
               "Outflow vessel length above the base plate."),
-      realKey("model.aortic_sinus_radius", HS_FIELD(geometry.aorticSinusRadius), ge(0), kMetres,
+      realKey("model.aortic_sinus_radius", HS_FIELD(geometry.aorticSinusRadius), between(0, 5), kMetres,
               "Lumen radius of the aortic root at its three sinuses of Valsalva (0: a straight root of the "
               "annulus's radius)."),
-      realKey("model.atrium_radius", HS_FIELD(geometry.atriumRadius), ge(0), kMetres,
+      realKey("model.atrium_radius", HS_FIELD(geometry.atriumRadius), between(0, 5), kMetres,
               "Lumen radius of the left atrium at its widest, over the mitral annulus (0: a straight inflow "
               "vessel)."),
       realKey("model.vessel_lean_deg", HS_FIELD(geometry.vesselLeanDeg), between(0, 40), "deg",
@@ -94,21 +101,23 @@ std::vector<KeySpec> tissueKeys() {
   return {
       realKey("tissue.stiffness", HS_FIELD(tissue.stiffness), between(0, 1), "",
               "PBD stiffness k of the wall's area and edge constraints (0 = limp, 1 = rigid)."),
-      realKey("tissue.volume_stiffness", HS_FIELD(tissue.volumeStiffness), between(0, 1), "",
-              "PBD stiffness k of the tet volume constraints (1 = incompressible myocardium)."),
-      realKey("tissue.volume_compliance", HS_FIELD(tissue.volumeCompliance), ge(0), "m^3/Pa",
-              "XPBD compliance of the tet volume constraints (0 = plain PBD)."),
-      realKey("tissue.area_compliance", HS_FIELD(tissue.areaCompliance), ge(0), "m^3/N",
-              "XPBD compliance of the surface area constraints (0 = plain PBD)."),
-      realKey("tissue.edge_compliance", HS_FIELD(tissue.edgeCompliance), ge(0), "m/N",
-              "XPBD compliance of the edge distance constraints (0 = plain PBD)."),
+      realKey("tissue.volume_stiffness", HS_FIELD(tissue.volumeStiffness), between(0.25, 1), "",
+              "PBD stiffness k of the tet volume constraints (1 = incompressible myocardium; at 0.1 the "
+              "thesis's beat inverts paper-chamber-beating's tets within 20 steps)."),
+      realKey("tissue.volume_compliance", HS_FIELD(tissue.volumeCompliance), between(0, 1e-9), "m^3/Pa",
+              "XPBD compliance of the tet volume constraints (0 = plain PBD; at 1e-8 paper-chamber-beating's wall "
+              "gives up its volume to the beat and its tets invert within 20 steps)."),
+      realKey("tissue.area_compliance", HS_FIELD(tissue.areaCompliance), between(0, 1), "m^3/N",
+              "XPBD compliance of the surface area constraints (0 = plain PBD; from 1e-3 on as good as off)."),
+      realKey("tissue.edge_compliance", HS_FIELD(tissue.edgeCompliance), between(0, 1), "m/N",
+              "XPBD compliance of the edge distance constraints (0 = plain PBD; from 1e-3 on as good as off)."),
       boolKey("tissue.areas", HS_FIELD(tissue.areas), "Surface triangle area constraints on (thesis 4.1.2)."),
       boolKey("tissue.edges", HS_FIELD(tissue.edges),
               "Edge distance constraints on (volume and area alone do not hold the shape)."),
       boolKey("tissue.gravity", HS_FIELD(tissue.gravity),
               "Gravity acts on the wall too (default false: the pericardium carries the heart's weight)."),
-      realKey("tissue.damping", HS_FIELD(tissue.damping), ge(0), "1/s",
-              "Velocity damping of the wall (viscous tissue)."),
+      realKey("tissue.damping", HS_FIELD(tissue.damping), between(0, 1000), "1/s",
+              "Velocity damping of the wall (viscous tissue); 1000 takes a 1 ms step's whole velocity."),
       realKey("tissue.density", HS_FIELD(tissue.density), between(1, 100000), "kg/m^3",
               "Tissue density; vertex masses come from tet volumes."),
   };
@@ -133,13 +142,14 @@ std::vector<KeySpec> cycleKeys() {
              "Number of beats, then the wall relaxes; 0 = no limit."),
       intKey("cycle.beating_duration", HS_FIELD(cycle.beatingDuration), 1, "steps",
              "Thesis mode: time steps per phase (systole, diastole)."),
-      realKey("cycle.beating_displace", HS_FIELD(cycle.beatingDisplace), ge(0), "m per step",
-              "Thesis mode: inward displacement of a beating vertex per systolic step."),
+      realKey("cycle.beating_displace", HS_FIELD(cycle.beatingDisplace), between(0, 1), "m per step",
+              "Thesis mode: inward displacement of a beating vertex per systolic step; at most 0.45 of the "
+              "procedural wall's edge (0.21 model.endo_radius / model.resolution), beyond which tets invert."),
       realKey("cycle.heart_rate_bpm", HS_FIELD(cycle.heartRateBpm), between(20, 250), "1/min",
               "Physiological mode: beats per minute."),
       realKey("cycle.systolic_fraction", HS_FIELD(cycle.systolicFraction), between(0.05, 0.95), "",
               "Physiological mode: share of each cycle spent in systole."),
-      realKey("cycle.contraction", HS_FIELD(cycle.contraction), ge(0), kMetres,
+      realKey("cycle.contraction", HS_FIELD(cycle.contraction), between(0, 2), kMetres,
               "Physiological mode: total inward displacement of a beating vertex per systole."),
       realKey("cycle.relaxation_fraction", HS_FIELD(cycle.relaxationFraction), between(0, 1), "",
               "Physiological mode: share of a regular diastole the wall takes to return to rest "
@@ -162,9 +172,9 @@ std::vector<KeySpec> cycleKeys() {
 // [cycle.sphere]: present = the vertices inside the sphere beat too
 std::vector<KeySpec> cycleSphereKeys() {
   return {
-      vec3Key("cycle.sphere.centre", HS_FIELD(cycle.sphereCentre), kMetres,
+      vec3Key("cycle.sphere.centre", HS_FIELD(cycle.sphereCentre), between(-kMaxCoordinate, kMaxCoordinate), kMetres,
               "Centre of a sphere whose vertices beat (the table's presence enables it)."),
-      realKey("cycle.sphere.radius", HS_FIELD(cycle.sphereRadius), gt(0), kMetres,
+      realKey("cycle.sphere.radius", HS_FIELD(cycle.sphereRadius), between(0.001, 100), kMetres,
               "Radius of that sphere; required when [cycle.sphere] is present."),
   };
 }
@@ -194,18 +204,21 @@ std::vector<KeySpec> bloodKeys() {
   return {
       boolKey("blood.enabled", HS_FIELD(blood.enabled), "Whether blood particles are simulated."),
       intKey("blood.particles", HS_FIELD(blood.particles), 0, "",
-             "Number of blood particles; 0 = fill the start block (lowest layers first otherwise).",
-             10'000'000),
-      realKey("blood.radius", HS_FIELD(blood.radius), gt(0), kMetres,
+             "Number of blood particles; 0 = fill the start block (lowest layers first otherwise). At most "
+             "1,000,000, ten times a body's 5 L of blood at the real-size hearts' spacing (107,000).",
+             1'000'000),
+      realKey("blood.radius", HS_FIELD(blood.radius), between(1e-4, 1), kMetres,
               "Particle radius: distance kept from walls and between particles (thesis 0.08 m)."),
-      realKey("blood.spacing", HS_FIELD(blood.spacing), gt(0), kMetres,
+      realKey("blood.spacing", HS_FIELD(blood.spacing), between(1e-4, 1), kMetres,
               "Particle spacing at rest (normally 2 radii); particle mass = rest_density spacing^3."),
-      realKey("blood.support_radius", HS_FIELD(blood.supportRadius), gt(0), kMetres,
+      realKey("blood.support_radius", HS_FIELD(blood.supportRadius), between(1e-4, 2), kMetres,
               "SPH kernel support radius h, larger than the spacing (thesis 0.32 m = 2 spacings)."),
-      realKey("blood.rest_density", HS_FIELD(blood.restDensity), between(1, 100000), "kg/m^3",
-              "Density at rest (thesis 1000; blood 1060)."),
-      realKey("blood.viscosity", HS_FIELD(blood.viscosity), between(0, 1000), "Pa s",
-              "Dynamic viscosity (thesis 0.04; blood 0.0035; water 0.001)."),
+      realKey("blood.rest_density", HS_FIELD(blood.restDensity), between(500, 100000), "kg/m^3",
+              "Density at rest (thesis 1000; blood 1060); at least 500, the lightest liquids' (at 1 a real-size "
+              "heart lost blood within 20 steps)."),
+      realKey("blood.viscosity", HS_FIELD(blood.viscosity), between(0, 100), "Pa s",
+              "Dynamic viscosity (thesis 0.04; blood 0.0035; water 0.001); at most 100 (at 1000 paper-chamber-beating "
+              "lost blood within 15 steps)."),
       realKey("blood.xsph", HS_FIELD(blood.xsph), between(0, 0.95), "",
               "XSPH smoothing gamma of thesis eq. 4.11 (0 = off; below 1 for stability)."),
       intKey("blood.iterations", HS_FIELD(blood.iterations), 1, "", "Density solver iterations per step.",
@@ -227,14 +240,15 @@ std::vector<KeySpec> bloodKeys() {
       intKey("blood.tensile_n", HS_FIELD(blood.tensileN), 1, "", "s_corr exponent n (PBF: 4).", 16),
       realKey("blood.tensile_dq", HS_FIELD(blood.tensileDeltaQ), between(0.01, 0.99), "",
               "s_corr reference distance, as a fraction of the support radius (PBF: 0.1-0.3)."),
-      realKey("blood.vorticity", HS_FIELD(blood.vorticity), between(0, 1000), "m/s",
-              "Vorticity confinement epsilon (PBF eq. 16); 0 = off."),
+      realKey("blood.vorticity", HS_FIELD(blood.vorticity), between(0, 1), "m/s",
+              "Vorticity confinement epsilon (PBF eq. 16); 0 = off. At most 1: at 10 idealized-lv loses blood "
+              "through the wall within 20 steps (3 runs), at 100 every real-size heart within 4."),
       choiceKey("blood.start", HS_FIELD(blood.start), starts,
                 "Where the blood starts: \"block\" (block_min..block_max), \"chamber\" (the LV cavity) or "
                 "\"vessel\" (the inflow vessel, then the cavity from the base down if it holds more)."),
-      vec3Key("blood.block_min", HS_FIELD(blood.blockMin), kMetres,
+      vec3Key("blood.block_min", HS_FIELD(blood.blockMin), between(-kMaxCoordinate, kMaxCoordinate), kMetres,
               "Lower corner of the block the blood starts in."),
-      vec3Key("blood.block_max", HS_FIELD(blood.blockMax), kMetres, "Upper corner of that block."),
+      vec3Key("blood.block_max", HS_FIELD(blood.blockMax), between(-kMaxCoordinate, kMaxCoordinate), kMetres, "Upper corner of that block."),
       intKey("blood.loss_allowed", HS_FIELD(blood.lossAllowed), 0, "",
              "Blood particles that may leave the domain before `heartsim run` stops with exit 3, naming when "
              "and where; 0: any loss is a failure.",
@@ -246,8 +260,8 @@ std::vector<KeySpec> bloodKeys() {
 std::vector<KeySpec> containerKeys() {
   return {
       boolKey("container.enabled", HS_FIELD(container.enabled), "A closed box the blood cannot leave."),
-      vec3Key("container.min", HS_FIELD(container.min), kMetres, "Lower corner of the box."),
-      vec3Key("container.max", HS_FIELD(container.max), kMetres, "Upper corner of the box."),
+      vec3Key("container.min", HS_FIELD(container.min), between(-kMaxCoordinate, kMaxCoordinate), kMetres, "Lower corner of the box."),
+      vec3Key("container.max", HS_FIELD(container.max), between(-kMaxCoordinate, kMaxCoordinate), kMetres, "Upper corner of the box."),
       boolKey("container.mesh", HS_FIELD(container.mesh),
               "Walls as a static triangle mesh instead of planes (same box)."),
   };
@@ -288,21 +302,21 @@ std::vector<KeySpec> lumpedCirculationKeys() {
               "pressures and drives the wall: the cavity follows its volume, the valves its valves. "
               "Needs cycle.mode = \"physiological\"."),
       clinicalKey("circulation.contractility_mmhg_per_ml", HS_FIELD(circulation.lumpedParameters.contractility),
-                  elastance, gtLe(0, 20), "mmHg/mL",
+                  elastance, between(0.05, 20), "mmHg/mL",
                   "End-systolic elastance Ees of the whole ventricle (scaled by the share of the wall that beats)."),
       clinicalKey("circulation.lv_v0_ml", HS_FIELD(circulation.lumpedParameters.unstressedVolume), mL,
                   between(0, 200), "mL", "Unstressed volume V0 of the pressure-volume relations."),
       clinicalKey("circulation.lv_stiffness_mmhg", HS_FIELD(circulation.lumpedParameters.diastolicScale), mmHg,
-                  gtLe(0, 20), "mmHg", "A of the end-diastolic relation P = A (exp(B (V - V0)) - 1)."),
+                  between(0.01, 20), "mmHg", "A of the end-diastolic relation P = A (exp(B (V - V0)) - 1)."),
       clinicalKey("circulation.lv_stiffness_per_ml", HS_FIELD(circulation.lumpedParameters.diastolicExponent),
-                  1 / mL, gtLe(0, 0.05), "1/mL",
+                  1 / mL, between(0.001, 0.05), "1/mL",
                   "B of the end-diastolic relation: the ventricle's stiffness (beyond 0.05 the relaxed "
                   "ventricle's pressure at its rest volume is hundreds of mmHg and throws the blood about)."),
       clinicalKey("circulation.peripheral_resistance_mmhg_s_per_ml",
-                  HS_FIELD(circulation.lumpedParameters.peripheralResistance), resistance, gtLe(0, 20),
+                  HS_FIELD(circulation.lumpedParameters.peripheralResistance), resistance, between(0.1, 20),
                   "mmHg s/mL", "Afterload: systemic peripheral resistance of the Windkessel."),
       clinicalKey("circulation.arterial_compliance_ml_per_mmhg",
-                  HS_FIELD(circulation.lumpedParameters.arterialCompliance), compliance, gtLe(0, 20), "mL/mmHg",
+                  HS_FIELD(circulation.lumpedParameters.arterialCompliance), compliance, between(0.1, 20), "mL/mmHg",
                   "Afterload: compliance of the systemic arteries."),
       clinicalKey("circulation.characteristic_impedance_mmhg_s_per_ml",
                   HS_FIELD(circulation.lumpedParameters.characteristicImpedance), resistance, between(0, 1),

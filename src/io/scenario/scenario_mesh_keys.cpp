@@ -70,7 +70,7 @@ std::vector<KeySpec> meshModelKeys() {
       choiceKey("model.mesh_resolution", HS_FIELD(patient.resolution), resolutions,
                 "kind = \"mesh\": the wall's edge length: \"coarse\" 6 mm (real time), \"default\" 5 mm, "
                 "\"fine\" 3 mm; one tet across the wall."),
-      vec3Key("model.septum", HS_FIELD(patient.septum), "",
+      vec3Key("model.septum", HS_FIELD(patient.septum), between(-1, 1), "",
               "kind = \"mesh\": direction toward the septum in the file's frame; [0, 0, 0] = found (from a "
               "biventricular epicardium, the aortic annulus or a file axis)."),
       intKey("model.mitral_loop", HS_FIELD(patient.mitralLoop), 0, "",
@@ -98,8 +98,9 @@ std::vector<KeySpec> motionKeys() {
                 "triangles), frame 0 at end-diastole. The endocardium follows them; \"\" = heartsim's own cycle."),
       intKey("motion.count", HS_FIELD(motion.count), 0, "",
              "Frames in the recorded beat, numbered from 0 (at least 2 with motion.frames).", 1000),
-      realKey("motion.period", HS_FIELD(motion.period), ge(0), "s",
-              "The recorded beat's length; it sets the heart rate (at least 0.24 s with motion.frames, 250 bpm)."),
+      realKey("motion.period", HS_FIELD(motion.period), between(0, 3), "s",
+              "The recorded beat's length; it sets the heart rate (at least 0.24 s with motion.frames, 250 bpm; at "
+              "most 3 s, 20 bpm, as cycle.heart_rate_bpm)."),
   };
 }
 

@@ -346,6 +346,20 @@ TEST(LvModel, BuildIsDeterministic) {
   EXPECT_EQ(a.aorticRing, b.aorticRing);
 }
 
+// The least wall, plate, vessel lengths and aortic orifice the checks let through (shares of
+// endo_radius, 2 m) are meshed without a flat tet at the coarsest and the thesis's resolution.
+TEST(LvModel, TheThinnestPartsTheChecksAcceptAreMeshed) {
+  for (const float resolution : {0.25f, 1.0f}) {
+    LvGeometryParams p;
+    p.resolution = resolution;
+    p.wallThickness = 0.2f;
+    p.baseThickness = 0.1f;
+    p.inflowVesselLength = p.outflowVesselLength = 0.4f;
+    p.aorticRadius = 0.2f;
+    EXPECT_NO_THROW(buildLvModel(p)) << "resolution " << resolution;
+  }
+}
+
 TEST(LvModel, BadParametersThrowNamingTheKey) {
   struct Case {
     std::string key;
@@ -372,6 +386,13 @@ TEST(LvModel, BadParametersThrowNamingTheKey) {
       {"model.inflow_vessel_length", [](LvGeometryParams& p) { p.inflowVesselLength = 41; }},
       {"model.outflow_vessel_length", [](LvGeometryParams& p) { p.outflowVesselLength = 1e6f; }},
       {"model.wall_thickness", [](LvGeometryParams& p) { p.wallThickness = 41; }},
+      // Thinner than a mesh holds without flat tets, in shares of endo_radius (2 m here).
+      {"model.wall_thickness", [](LvGeometryParams& p) { p.wallThickness = 0.19f; }},          // < 0.1
+      {"model.base_thickness", [](LvGeometryParams& p) { p.baseThickness = 0.09f; }},          // < 0.05
+      {"model.vessel_wall_thickness", [](LvGeometryParams& p) { p.vesselWallThickness = 0.001f; }},  // < 0.001
+      {"model.outflow_vessel_length", [](LvGeometryParams& p) { p.outflowVesselLength = 0.39f; }},   // < 0.2
+      {"model.aortic_radius", [](LvGeometryParams& p) { p.aorticRadius = 0.19f; }},            // < 0.1
+      {"model.endo_long_axis", [](LvGeometryParams& p) { p.endoLongAxis = 1.9f; }},           // < 1
   };
   for (const Case& c : cases) {
     LvGeometryParams p;
