@@ -30,7 +30,9 @@ status=0
 
 part=$SECONDS
 # The test preset leaves out what this build does not make (the apps', render's and viewer's
-# tests: ctest names them *_NOT_BUILT) and the rooms' check, which the release suite ran.
+# tests: ctest names them *_NOT_BUILT), the rooms' check, and the tests labelled `long` (the
+# scenario keys' extremes: 17 built-ins x 20-step runs, about ten times slower sanitized), which
+# the release suite ran.
 ctest --preset asan-ci -j "$(nproc)" || status=1
 echo "heartsim: sanitized checks: unit tests in $((SECONDS - part)) s" >&2
 

@@ -30,10 +30,10 @@ struct BadInput {
 TEST(CliLumped, BadPhysiologicalInputNamesTheKeyAndTheAcceptedRange) {
   const BadInput cases[] = {
       {"circulation.arterial_compliance_ml_per_mmhg=-1", "circulation.arterial_compliance_ml_per_mmhg",
-       "> 0 and <= 20"},
+       ">= 0.1 and <= 20"},
       {"circulation.peripheral_resistance_mmhg_s_per_ml=0", "circulation.peripheral_resistance_mmhg_s_per_ml",
-       "> 0 and <= 20"},
-      {"circulation.contractility_mmhg_per_ml=0", "circulation.contractility_mmhg_per_ml", "> 0 and <= 20"},
+       ">= 0.1 and <= 20"},
+      {"circulation.contractility_mmhg_per_ml=0", "circulation.contractility_mmhg_per_ml", ">= 0.05 and <= 20"},
       {"cycle.heart_rate_bpm=0", "cycle.heart_rate_bpm", ">= 20 and <= 250"},
       {"cycle.heart_rate_bpm=400", "cycle.heart_rate_bpm", ">= 20 and <= 250"},
       {"circulation.aortic_valve_area_cm2=5", "circulation.aortic_valve_area_cm2", "no more than the aortic vessel"},

@@ -225,8 +225,10 @@ constexpr double kMaxDisplaceInEdges = 0.45;
 void validateBeatingDisplace(const ParseState& st) {
   const cardiac::Scenario& sc = st.scenario;
   const auto& c = sc.cycle;
+  // The lumped circulation drives the wall by its volume, never by this step (and refuses thesis
+  // timing itself, with its own message).
   if (!sc.heart || sc.patient.kind != cardiac::ModelKind::Procedural || !c.enabled ||
-      c.mode != cardiac::TimingMode::Thesis)
+      c.mode != cardiac::TimingMode::Thesis || sc.circulation.lumped)
     return;
   const double edge = cardiac::nominalEdgeLength(sc.geometry);
   const double limit = kMaxDisplaceInEdges * edge;
