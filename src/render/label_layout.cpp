@@ -21,7 +21,7 @@ std::vector<PlacedLabel> layoutLabels(const std::vector<SceneLabel>& labels,
   const float onColumn = 0.06f * float(width);
 
   std::vector<LabelBox> taken = avoid;
-  auto free = [&](const LabelBox& box) {
+  auto clearOfAll = [&](const LabelBox& box) {
     return std::none_of(taken.begin(), taken.end(), [&](const LabelBox& q) { return box.overlaps(q); });
   };
   std::vector<PlacedLabel> placed;
@@ -47,7 +47,7 @@ std::vector<PlacedLabel> layoutLabels(const std::vector<SceneLabel>& labels,
     box.x = std::clamp(box.x, bounds.x, maxX);
     box.y = std::clamp(box.y, bounds.y, maxY);
     const float first = box.y, line = box.height + pad;
-    for (int tries = 1; tries <= 24 && !free(box); ++tries) {
+    for (int tries = 1; tries <= 24 && !clearOfAll(box); ++tries) {
       const int lines = (tries + 1) / 2 * (tries % 2 == 1 ? 1 : -1);  // +1, -1, +2, -2, ...
       box.y = std::clamp(first + float(lines) * line, bounds.y, maxY);
     }
