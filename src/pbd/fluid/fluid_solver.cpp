@@ -7,6 +7,8 @@
 #include <numeric>
 #include <utility>
 
+#include "pbd/fluid/velocity_field.h"
+
 namespace hs::pbd {
 namespace {
 
@@ -159,6 +161,32 @@ FluidStats FluidSolver::measure(const Particles& particles, Real spacing, int th
   FluidStats stats = measureDensityOnLists(x, m_lists, m_settings.fluid, spacing, threads);
   for (const Index i : m_slotParticle) stats.maxSpeed = std::max(stats.maxSpeed, particles.velocity[i].norm());
   return stats;
+}
+
+void FluidSolver::smoothedVelocities(const Particles& particles, std::vector<Vec3>& smoothed, int threads,
+                                     std::span<const std::uint8_t> wanted) {
+  smoothed.assign(particles.size(), Vec3::Zero());
+  if (m_indexedCount != particles.size() || m_slotParticle.size() != m_fluid.size() ||
+      m_lists.offsets.size() != m_slotParticle.size() + 1)
+    return;
+  const auto n = std::ptrdiff_t(m_slotParticle.size());
+  m_smoothX.resize(m_slotParticle.size());
+  m_smoothV.resize(m_slotParticle.size());
+  m_smoothVolume.resize(m_slotParticle.size());
+  // V_j = m / rho0: one mass for the whole fluid (PBF); 0 for a parked particle.
+  const Real volume = m_settings.fluid.particleMass / m_settings.fluid.restDensity;
+#pragma omp parallel for schedule(static) num_threads(threads) if (std::size_t(n) >= kParallelThreshold)
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    const Index i = m_slotParticle[k];
+    m_smoothX[k] = particles.position[i];
+    m_smoothV[k] = particles.velocity[i];
+    m_smoothVolume[k] = particles.active(i) ? volume : Real(0);
+  }
+  m_smoothSubset.clear();
+  for (std::size_t k = 0; k < m_slotParticle.size(); ++k)
+    if (wanted.empty() || wanted[m_slotParticle[k]]) m_smoothSubset.push_back(Index(k));
+  smoothVelocities(m_smoothX, m_smoothV, m_smoothVolume, m_lists, m_smoothSubset, m_kernels, m_smoothOut, threads);
+  for (const Index k : m_smoothSubset) smoothed[m_slotParticle[k]] = m_smoothOut[k];
 }
 
 void FluidSolver::postProcessVelocities(Particles& particles, const StepContext& context) {

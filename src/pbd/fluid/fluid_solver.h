@@ -22,6 +22,7 @@
 // beginDensitySolve, iterations() x iterateDensity (with its own contacts on
 // workingPositions() after each), endDensitySolve, and postProcessVelocities after the
 // velocity update. Parked particles (Particles::state) take no part; pinned ones do not move.
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
@@ -103,6 +104,14 @@ class FluidSolver {
   // measureDensityOnLists). Before the first solve, or after the fluid set changed, it builds
   // a grid (measureFluid).
   FluidStats measure(const Particles& particles, Real spacing, int threads) const;
+  // The smoothed velocity v~ (velocity_field.h) at the particles' current positions and
+  // velocities, over the neighbour lists of the last solve, written to smoothed[i] by particle
+  // index (resized to particles.size(); entries of particles not evaluated are 0). `wanted`,
+  // by particle index: evaluate only where nonzero (empty: every fluid particle). A parked
+  // particle weighs nothing (V = 0). Empty before the first solve or after the fluid set changed.
+  // A measurement: the particles are not touched.
+  void smoothedVelocities(const Particles& particles, std::vector<Vec3>& smoothed, int threads,
+                          std::span<const std::uint8_t> wanted = {});
 
  private:
   static constexpr std::size_t kNotIndexed = ~std::size_t(0);
@@ -137,6 +146,10 @@ class FluidSolver {
   std::vector<WallProximity> m_wallProximity;  // slot: nearest wall, during a solve that lends
   std::vector<Vec3> m_wallStart;   // slot: where it was found
   bool m_wallsLend = false;
+  // smoothedVelocities' slot arrays, kept so that a step's measurement allocates nothing.
+  std::vector<Vec3> m_smoothX, m_smoothV, m_smoothOut;
+  std::vector<Real> m_smoothVolume;
+  std::vector<Index> m_smoothSubset;
 };
 
 }  // namespace hs::pbd
