@@ -172,7 +172,11 @@ void HeartSimulation::resolveBloodContacts(const pbd::StepContext&) {
 void HeartSimulation::endStep(const pbd::StepContext& context) {
   if (!m_circulation) return;
   Circulation& c = *m_circulation;
-  c.meter.measure(m_particles, m_firstBloodParticle, m_fluid->pressures(), c.valves.states(), context.threads);
+  // Measurements only: the smoothed velocity over the solve's neighbour lists, read by the
+  // flow meter's Doppler readings and the monitor's kinetic energy.
+  m_fluid->smoothedVelocities(m_particles, m_smoothedVelocity, context.threads);
+  c.meter.measure(m_particles, m_firstBloodParticle, m_fluid->pressures(), c.valves.states(), context.threads,
+                  m_smoothedVelocity);
   const BloodLoop::Turnover turnover =
       c.settings.loop ? c.loop.circulate(m_particles, m_firstBloodParticle) : BloodLoop::Turnover{};
   c.meter.recordLoop(turnover.returned, turnover.reentered, c.loop.waiting());

@@ -101,6 +101,11 @@ class HeartSimulation {
   // Pressure (Pa) of each particle from the last density solve (0 for the wall), see
   // pbd::FluidSolver::pressures(); empty without blood.
   [[nodiscard]] const std::vector<Real>& pressures() const;
+  // Heart and blood: the smoothed velocity (m/s) of each particle at the end of the last step
+  // (pbd/fluid/velocity_field.h), by particle index, 0 for the wall; what the flow meter's Doppler
+  // readings and the ventricle's kinetic energy are measured from. Empty before the first step
+  // (and after a checkpoint's load) and without a circulation.
+  [[nodiscard]] const std::vector<Vec3>& smoothedVelocities() const { return m_smoothedVelocity; }
   // Where a blood particle started (its FlowRegion at t = 0: inflow vessel, ventricle, or
   // Parked for blood that began outside the model); Outside without a heart.
   [[nodiscard]] FlowRegion bloodOrigin(Index particle) const {
@@ -168,6 +173,7 @@ class HeartSimulation {
   std::optional<LumpedCirculation> m_lumped;                // circulation.lumped
   std::optional<VolumeDrivenWall> m_drivenWall;             // circulation.lumped
   double m_lastBloodPush = 0;                                // m^3, two-way coupling
+  std::vector<Vec3> m_smoothedVelocity;                     // heart and blood: see smoothedVelocities()
   std::optional<VesselEnds> m_ends;                         // circulation.lumped
   std::optional<RecordedBeat> m_recordedBeat;               // [motion]
   std::vector<double> m_regionShares;                       // circulation.lumped: per beating region

@@ -70,6 +70,7 @@ HealthIssue checkBlood(const BloodStats& blood, const HealthLimits& limits) {
 }
 
 void RunExtremes::add(const StepSample& sample, bool heart) {
+  smoothedSpeedMax = std::max(smoothedSpeedMax, sample.smoothedSpeedMax);
   if (heart) {
     volumeErrorMax = std::max(volumeErrorMax, double(sample.tissue.volumeErrorMax));
     volumeErrorMeanSum += double(sample.tissue.volumeErrorMean);
@@ -103,7 +104,10 @@ RunMonitor::RunMonitor(const HeartSimulation& sim, MonitorSettings settings)
   if (sim.hasHeart() && settings.pump) m_last.cavity = double(sim.cavityVolume());
   if (sim.lumped() && settings.pump)
     m_circulation.emplace(double(sim.scenario().simulation.dt), settings.lumpedSamples);
-  if (sim.circulation() && sim.hasBlood() && settings.pump) m_ventricleBlood.emplace(sim.particles(), sim.firstBloodParticle());
+  if (sim.circulation() && sim.hasBlood() && settings.pump) {
+    m_ventricleBlood.emplace(sim.particles(), sim.firstBloodParticle());
+    m_echo.emplace();
+  }
   // The wall's surface hinges that are smooth at rest (bent by less than kSmoothHinge) and their
   // angles (the model's vertices are the first particles, heart_simulation.h), to find creases:
   // a crease is a fold where the surface was smooth. The modelled corners (the base's rim, the
@@ -158,9 +162,7 @@ const Verdict& RunMonitor::observe() {
   // No sound at the first step: its phase is read without the one before.
   if (m_last.heartPhase != HeartPhase::None) sample.heartSound = heartSoundAt(m_last.heartPhase, sample.heartPhase);
   if (sample.lumped) sample.ecg = m_sim.ecgMillivolts();
-  if (m_ventricleBlood && sample.circulation)
-    sample.ventricleKineticEnergy = m_ventricleBlood->observe(m_sim.particles(), m_sim.circulation()->meter.regions(),
-                                                              m_last.heartPhase, sample.heartPhase, sample.time);
+  if (m_ventricleBlood && sample.circulation) observeBlood(sample);
   ++m_observed;
   m_extremes.add(sample, m_sim.hasHeart() && m_settings.pump);
   if (m_sim.hasHeart() && m_settings.beatList) m_beats.record(sample.startTime, sample.phase, sample.cavity, sample.flows);
@@ -189,6 +191,23 @@ void RunMonitor::gather(StepSample& sample) const {
   }
 }
 
+// The blood's own figures from the smoothed velocity: the ventricle's kinetic energy, the cycle's
+// Doppler peaks (the A wave while the lumped atrium contracts) and the largest smoothed speed.
+void RunMonitor::observeBlood(StepSample& sample) {
+  const pbd::Particles& particles = m_sim.particles();
+  const std::vector<Vec3>& smoothed = m_sim.smoothedVelocities();
+  if (smoothed.size() != particles.size()) return;  // no step measured yet
+  sample.ventricleKineticEnergy = m_ventricleBlood->observe(particles, m_sim.circulation()->meter.regions(), smoothed,
+                                                            m_last.heartPhase, sample.heartPhase, sample.time);
+  const bool atrialKick = sample.lumped && sample.lumped->atrialActivation > 0;
+  m_echo->observe(sample.flowStep.aorticEcho, sample.flowStep.mitralEcho, m_last.heartPhase, sample.heartPhase,
+                  atrialKick, sample.time);
+  Real fastest = 0;
+  for (std::size_t i = m_sim.firstBloodParticle(); i < particles.size(); ++i)
+    if (particles.active(i)) fastest = std::max(fastest, smoothed[i].squaredNorm());
+  sample.smoothedSpeedMax = std::sqrt(double(fastest));
+}
+
 void RunMonitor::recordCirculation(const StepSample& sample) {
   CoupledStep step;
   step.startTime = sample.startTime;
@@ -214,6 +233,8 @@ RunSummary RunMonitor::summary() const {
   r.beats = m_beats;
   r.circulation = m_circulation;
   r.ventricleBlood = m_ventricleBlood;
+  r.echo = m_echo;
+  r.smoothedSpeedMax = m_extremes.smoothedSpeedMax;
   const RunExtremes& e = m_extremes;
   if (r.heart) {
     const LvModel& model = m_sim.model();
@@ -288,22 +309,22 @@ std::string heartPhaseLabel(const StepSample& s) {
 
 void StepSample::save(pbd::StateWriter& w) const {
   w.fields(step, startTime, time, phase, heartPhase, heartSound, ecg, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
-           contraction, baseDescent, vesselFill, surfaceTurn, bloodPush, ventricleKineticEnergy);
+           contraction, baseDescent, vesselFill, surfaceTurn, bloodPush, ventricleKineticEnergy, smoothedSpeedMax);
 }
 
 void StepSample::load(pbd::StateReader& r) {
   r.fields(step, startTime, time, phase, heartPhase, heartSound, ecg, cavity, tissue, restDeviation, blood, flows, flowStep, circulation, lumped,
-           contraction, baseDescent, vesselFill, surfaceTurn, bloodPush, ventricleKineticEnergy);
+           contraction, baseDescent, vesselFill, surfaceTurn, bloodPush, ventricleKineticEnergy, smoothedSpeedMax);
 }
 
 void RunExtremes::save(pbd::StateWriter& w) const {
   w.fields(volumeErrorMax, volumeErrorMeanSum, surfaceTurnMax, bloodPushMax, bloodPushSum, cavityMin, cavityMax, bloodLostMax, bloodInsideWallMax, bloodSpeedMax,
-           lastSecondFrom, densityErrorMeanSum, densityErrorMax, lastSecondSteps);
+           smoothedSpeedMax, lastSecondFrom, densityErrorMeanSum, densityErrorMax, lastSecondSteps);
 }
 
 void RunExtremes::load(pbd::StateReader& r) {
   r.fields(volumeErrorMax, volumeErrorMeanSum, surfaceTurnMax, bloodPushMax, bloodPushSum, cavityMin, cavityMax, bloodLostMax, bloodInsideWallMax, bloodSpeedMax,
-           lastSecondFrom, densityErrorMeanSum, densityErrorMax, lastSecondSteps);
+           smoothedSpeedMax, lastSecondFrom, densityErrorMeanSum, densityErrorMax, lastSecondSteps);
 }
 
 void RunMonitor::save(pbd::StateWriter& w) const {
@@ -311,7 +332,10 @@ void RunMonitor::save(pbd::StateWriter& w) const {
   w.fields(m_verdict, m_last, m_beats, m_circulation.has_value());
   if (m_circulation) m_circulation->save(w);
   w.put(m_ventricleBlood.has_value());
-  if (m_ventricleBlood) m_ventricleBlood->save(w);
+  if (m_ventricleBlood) {
+    m_ventricleBlood->save(w);
+    m_echo->save(w);
+  }
   w.fields(m_extremes, m_observed);
 }
 
@@ -331,7 +355,10 @@ void RunMonitor::load(pbd::StateReader& r) {
   if (ventricleBlood != m_ventricleBlood.has_value())
     throw pbd::StateError("run monitor: the ventricle's blood figures are saved for a run without blood or missing",
                           r.offset());
-  if (m_ventricleBlood) m_ventricleBlood->load(r);
+  if (m_ventricleBlood) {
+    m_ventricleBlood->load(r);
+    m_echo->load(r);
+  }
   r.fields(m_extremes, m_observed);
   // The density error is averaged over the last second before this run's end: a window that
   // begins after the checkpoint starts empty; one that began before it keeps what it holds.

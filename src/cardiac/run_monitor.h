@@ -14,6 +14,7 @@
 
 #include "cardiac/anatomy/lv_model.h"
 #include "cardiac/blood.h"
+#include "cardiac/blood/echo_velocities.h"
 #include "cardiac/blood/ventricle_blood.h"
 #include "cardiac/circulation.h"
 #include "cardiac/circulation/beat_metrics.h"
@@ -95,8 +96,11 @@ struct StepSample {
   double surfaceTurn = 0;
   // Two-way coupling: the cavity's change (m^3) from the blood's push on the wall in the step.
   double bloodPush = 0;
-  // Heart and blood with valves: the kinetic energy of the blood in the ventricle (J).
+  // Heart and blood with valves: the kinetic energy of the blood in the ventricle (J), from the
+  // smoothed velocity (ventricle_blood.h), and the largest smoothed speed of any blood particle
+  // (m/s): what the viewer's and `render`'s speed colours show at their hottest.
   double ventricleKineticEnergy = 0;
+  double smoothedSpeedMax = 0;
   [[nodiscard]] double pressure(FlowRegion region) const { return flowStep.pressure[std::size_t(region)]; }
   void save(pbd::StateWriter& w) const;
   void load(pbd::StateReader& r);
@@ -114,6 +118,7 @@ struct RunExtremes {
   double cavityMax = -std::numeric_limits<double>::infinity();
   std::size_t bloodLostMax = 0, bloodInsideWallMax = 0;
   double bloodSpeedMax = 0;
+  double smoothedSpeedMax = 0;  // m/s, StepSample::smoothedSpeedMax
   double lastSecondFrom = 0;
   double densityErrorMeanSum = 0, densityErrorMax = 0;
   std::size_t lastSecondSteps = 0;
@@ -145,6 +150,8 @@ struct RunSummary {
   // Heart and blood with valves: the flow components of each beat and the blood's kinetic
   // energy over each cycle (ventricle_blood.h).
   std::optional<VentricleBlood> ventricleBlood;
+  // With the same: each cycle's Doppler peaks in the orifices (echo_velocities.h).
+  std::optional<EchoVelocities> echo;
   // [motion]: the recorded beat's frame volumes (m^3; empty without one), its period (s) and the
   // largest relative difference of the 3D cavity from the recorded volume over the run.
   std::vector<double> motionFrameVolumes;
@@ -154,6 +161,7 @@ struct RunSummary {
   BloodStats bloodFinal;
   std::size_t bloodLost = 0, bloodInsideWall = 0;
   double densityErrorMean = 0, densityErrorMax = 0, bloodSpeedMax = 0;
+  double smoothedSpeedMax = 0;  // m/s, over the run (RunExtremes)
 };
 
 struct MonitorSettings {
@@ -189,6 +197,8 @@ class RunMonitor {
   [[nodiscard]] const BeatTracker& beats() const { return m_beats; }
   // Heart and blood with valves, figures gathered: the blood's own figures; null otherwise.
   [[nodiscard]] const VentricleBlood* ventricleBlood() const { return m_ventricleBlood ? &*m_ventricleBlood : nullptr; }
+  // With the same: each cycle's Doppler peaks; null otherwise.
+  [[nodiscard]] const EchoVelocities* echo() const { return m_echo ? &*m_echo : nullptr; }
   // circulation.lumped with figures gathered (MonitorSettings::pump); null otherwise.
   [[nodiscard]] const CirculationRecorder* circulation() const { return m_circulation ? &*m_circulation : nullptr; }
   [[nodiscard]] const RunExtremes& extremes() const { return m_extremes; }
@@ -209,6 +219,7 @@ class RunMonitor {
   BeatTracker m_beats;
   std::optional<CirculationRecorder> m_circulation;
   std::optional<VentricleBlood> m_ventricleBlood;
+  std::optional<EchoVelocities> m_echo;  // kept with m_ventricleBlood
   RunExtremes m_extremes;
   std::int64_t m_observed = 0;
   std::vector<pbd::Hinge> m_hinges;     // of the wall's surface, with a heart
@@ -217,6 +228,7 @@ class RunMonitor {
   [[nodiscard]] bool bloodLimited() const;
   void gather(StepSample& sample) const;
   void recordCirculation(const StepSample& sample);
+  void observeBlood(StepSample& sample);
 };
 
 }  // namespace hs::cardiac

@@ -46,13 +46,26 @@ struct ValveSample {
   [[nodiscard]] double mean(int k) const { return count[k] > 0 ? sum[k] / double(count[k]) : 0.0; }
 };
 
+// A Doppler sample volume in an orifice (echo_velocities.h): the smoothed velocity along the
+// disc's forward normal, summed over the blood within `slab` of the disc, inside its rim.
+struct DopplerSample {
+  double sum = 0;
+  std::size_t count = 0;
+  void add(const Orifice& o, const Vec3& x, const Vec3& smoothed, Real slab) {
+    if (std::abs(o.side(x)) > slab || o.radial(x) >= o.radius) return;
+    sum += double(o.forward.dot(smoothed));
+    ++count;
+  }
+  [[nodiscard]] double mean() const { return count > 0 ? sum / double(count) : 0.0; }
+};
+
 // Below this many blood particles the regions are found on one thread.
 constexpr std::ptrdiff_t kParallelRegions = 1024;
 
 }  // namespace
 
 void FlowMeter::measure(const pbd::Particles& particles, Index first, const std::vector<Real>& pressures,
-                        const ValveStates& valves, int threads) {
+                        const ValveStates& valves, int threads, std::span<const Vec3> smoothed) {
   assert(m_start.size() == particles.size() - first);
   // Each particle's region first, in parallel (a pure function of its position), so that the
   // sums below keep one order for any thread count.
@@ -67,7 +80,9 @@ void FlowMeter::measure(const pbd::Particles& particles, Index first, const std:
   s.valves = valves;
   std::array<double, kFlowRegionCount> pressureSum{};
   ValveSample mitral, aortic;
+  DopplerSample mitralDoppler, aorticDoppler;
   const Real slab = 2 * m_spacing;
+  const bool doppler = smoothed.size() == particles.size();
   for (std::size_t i = first; i < particles.size(); ++i) {
     if (!particles.active(i)) continue;
     const Vec3& x0 = m_start[i - first];
@@ -83,7 +98,13 @@ void FlowMeter::measure(const pbd::Particles& particles, Index first, const std:
     pressureSum[std::size_t(r)] += double(p);
     mitral.add(m_path.mitralValve(), x1, p, slab);
     aortic.add(m_path.aorticValve(), x1, p, slab);
+    if (doppler) {
+      mitralDoppler.add(m_path.mitralValve(), x1, smoothed[i], m_spacing);
+      aorticDoppler.add(m_path.aorticValve(), x1, smoothed[i], m_spacing);
+    }
   }
+  s.mitralEcho = mitralDoppler.mean();
+  s.aorticEcho = aorticDoppler.mean();
   for (std::size_t r = 0; r < kFlowRegionCount; ++r)
     s.pressure[r] = s.count[r] > 0 ? pressureSum[r] / double(s.count[r]) : 0.0;
   s.valvePressures = {mitral.mean(0) + m_atrialPressurePa, mitral.mean(1), aortic.mean(0), aortic.mean(1)};
@@ -103,11 +124,11 @@ ValveFlows FlowMeter::lastStepFlows() const {
 }
 
 void FlowStep::save(pbd::StateWriter& w) const {
-  w.fields(count, pressure, mitralForward, mitralBackward, aorticForward, aorticBackward, aorticJet, returned, reentered, valves, valvePressures);
+  w.fields(count, pressure, mitralForward, mitralBackward, aorticForward, aorticBackward, aorticJet, aorticEcho, mitralEcho, returned, reentered, valves, valvePressures);
 }
 
 void FlowStep::load(pbd::StateReader& r) {
-  r.fields(count, pressure, mitralForward, mitralBackward, aorticForward, aorticBackward, aorticJet, returned, reentered, valves, valvePressures);
+  r.fields(count, pressure, mitralForward, mitralBackward, aorticForward, aorticBackward, aorticJet, aorticEcho, mitralEcho, returned, reentered, valves, valvePressures);
 }
 
 void FlowMeter::save(pbd::StateWriter& w) const {

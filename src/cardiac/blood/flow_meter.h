@@ -3,9 +3,11 @@
 // backward (between their start-of-step and end-of-step positions; one particle carries the
 // volume m / rho0 = spacing^3), the blood in each region of the path and its mean pressure,
 // and the pressures just before and after each valve (blood within two spacings of the disc),
-// which the valves' pressure mode compares.
+// which the valves' pressure mode compares; and what pulsed-wave Doppler reads in each orifice
+// (echo_velocities.h).
 #include <array>
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "cardiac/anatomy/flow_path.h"
@@ -24,7 +26,13 @@ struct FlowStep {
   std::array<double, kFlowRegionCount> pressure{};     // Pa, mean per region (0 if empty)
   // Particles that crossed each orifice in the step, forward and backward.
   std::size_t mitralForward = 0, mitralBackward = 0, aorticForward = 0, aorticBackward = 0;
-  double aorticJet = 0;       // m/s, fastest particle that crossed the aortic disc forward
+  // m/s, the fastest single particle that crossed the aortic disc forward: PBF's particle noise
+  // rides on it (~0.5 m/s), so it is not the jet's velocity; aorticEcho is.
+  double aorticJet = 0;
+  // m/s, the Doppler readings (echo_velocities.h): the mean over the blood within one spacing of
+  // each valve's disc, inside its rim, of the smoothed velocity along the disc's forward normal;
+  // 0 with no blood there or no smoothed field given.
+  double aorticEcho = 0, mitralEcho = 0;
   std::size_t returned = 0;   // particles that left through a vessel end this step
   std::size_t reentered = 0;  // parked particles that re-entered the inflow vessel
   ValveStates valves;         // during the step
@@ -44,8 +52,10 @@ class FlowMeter {
   // End of a step: crossings, regions and pressures of the active blood. `pressures` is
   // indexed by particle (pbd::FluidSolver::pressures()). The regions are found on `threads`
   // threads (a patient's cavity test is the costly part); the sums run in particle order.
+  // `smoothed`: the smoothed velocity by particle (pbd::FluidSolver::smoothedVelocities), read
+  // for the Doppler readings; empty: none taken.
   void measure(const pbd::Particles& particles, Index first, const std::vector<Real>& pressures,
-               const ValveStates& valves, int threads = 1);
+               const ValveStates& valves, int threads = 1, std::span<const Vec3> smoothed = {});
   // The closed loop's share of the step (blood_loop.h): left, re-entered, waiting.
   void recordLoop(std::size_t returned, std::size_t reentered, std::size_t waiting);
 

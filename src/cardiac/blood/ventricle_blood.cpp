@@ -3,25 +3,28 @@
 #include <algorithm>
 #include <cassert>
 
+#include "cardiac/blood/echo_velocities.h"
+
 namespace hs::cardiac {
 
 VentricleBlood::VentricleBlood(const pbd::Particles& particles, pbd::Index first)
     : m_first(first), m_tracker(particles.size() - first), m_inVentricle(particles.size() - first, 0) {}
 
 double VentricleBlood::observe(const pbd::Particles& particles, std::span<const FlowRegion> regions,
-                               HeartPhase before, HeartPhase after, double time) {
+                               std::span<const pbd::Vec3> velocities, HeartPhase before, HeartPhase after,
+                               double time) {
   assert(regions.size() == particles.size() - m_first);
+  assert(velocities.size() == particles.size());
   // In particle order, so that the energy's sum is the same for any thread count.
   double energy = 0;
   for (std::size_t i = m_first; i < particles.size(); ++i) {
     const bool inside = particles.active(i) && regions[i - m_first] == FlowRegion::Ventricle;
     m_inVentricle[particles.id[i] - m_first] = inside;
     if (inside && particles.inverseMass[i] > 0)
-      energy += 0.5 * double(particles.velocity[i].squaredNorm()) / double(particles.inverseMass[i]);
+      energy += 0.5 * double(velocities[i].squaredNorm()) / double(particles.inverseMass[i]);  // m |v~|^2 / 2
   }
   m_tracker.observe(m_inVentricle);
-  const bool filled = before == HeartPhase::Filling &&
-                      (after == HeartPhase::IsovolumicContraction || after == HeartPhase::Ejection);
+  const bool filled = endDiastoleBetween(before, after);
   const bool ejected = before == HeartPhase::Ejection && after != HeartPhase::Ejection;
   if (filled) {
     m_tracker.endDiastole();

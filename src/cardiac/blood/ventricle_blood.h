@@ -1,7 +1,12 @@
 #pragma once
 // What the 3D blood in the ventricle itself tells, step by step and beat by beat, as 4D-flow MRI
-// reads a patient's: its kinetic energy (the sum of m v^2 / 2 over the particles in the
-// ventricle) and the flow components of each beat (flow_components.h). The beat's two events
+// reads a patient's: its kinetic energy and the flow components of each beat (flow_components.h).
+// The kinetic energy is that of the smoothed velocity field (pbd/fluid/velocity_field.h), as
+// 4D-flow MRI measures it from a velocity field on voxels (Garg et al. 2018, J Cardiovasc Magn
+// Reson 20:61: KE = sum over voxels of rho V |v|^2 / 2):
+//   E_k = sum over the blood particles in the ventricle of m |v~_i|^2 / 2.
+// PBF's particle velocities carry noise of ~0.5 m/s that is no flow: the sum of m |v_i|^2 / 2 over
+// particles counts its energy too, about twenty times the flow's in a healthy ventricle. The beat's two events
 // come from the heart's phase (heart_phase.h): end-diastole when filling gives way to isovolumic
 // contraction (or straight to ejection), end-systole when ejection ends. Fed by the run's monitor
 // after each step with the flow meter's regions.
@@ -32,7 +37,8 @@ struct BeatFlowComponents {
 };
 
 // The kinetic energy of the blood in the ventricle over one cardiac cycle, from an end-diastole
-// to the next (J): its time mean and its largest value while filling (the E and A jets).
+// to the next (J): its time mean (the mean over the cycle's steps of E_k, the cycle mean Garg et
+// al. 2018 divide by the EDV) and its largest value while filling (the E and A jets).
 struct CycleKineticEnergy {
   double start = 0, end = 0;  // s
   double mean = 0, fillingPeak = 0;
@@ -46,10 +52,11 @@ class VentricleBlood {
   VentricleBlood(const pbd::Particles& particles, pbd::Index first);
 
   // After a step ending at `time`: `regions[b]` is the region of the blood particle stored at
-  // first + b (FlowMeter::regions()); the phase went from `before` to `after`. Returns the
+  // first + b (FlowMeter::regions()); `velocities[i]` the smoothed velocity of particle i
+  // (HeartSimulation::smoothedVelocities()); the phase went from `before` to `after`. Returns the
   // kinetic energy of the blood in the ventricle (J).
-  double observe(const pbd::Particles& particles, std::span<const FlowRegion> regions, HeartPhase before,
-                 HeartPhase after, double time);
+  double observe(const pbd::Particles& particles, std::span<const FlowRegion> regions,
+                 std::span<const pbd::Vec3> velocities, HeartPhase before, HeartPhase after, double time);
 
   [[nodiscard]] const std::vector<BeatFlowComponents>& beats() const { return m_beats; }
   [[nodiscard]] const std::vector<CycleKineticEnergy>& cycles() const { return m_cycles; }

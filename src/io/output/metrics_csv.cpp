@@ -19,7 +19,8 @@ void writeFlowRow(std::ostream& csv, const cardiac::StepSample& sample) {
       << ',' << f.mitralForward * kMlPerM3 << ',' << f.mitralBackward * kMlPerM3 << ','
       << f.aorticForward * kMlPerM3 << ',' << f.aorticBackward * kMlPerM3 << ','
       << sample.pressure(FlowRegion::InflowVessel) << ',' << sample.pressure(FlowRegion::Ventricle) << ','
-      << sample.pressure(FlowRegion::OutflowVessel) << ',' << sample.ventricleKineticEnergy * 1e6;
+      << sample.pressure(FlowRegion::OutflowVessel) << ',' << sample.ventricleKineticEnergy * 1e6 << ','
+      << s.aorticEcho << ',' << s.mitralEcho;
 }
 
 void writeLumpedRow(std::ostream& csv, const cardiac::StepSample& sample) {
@@ -35,6 +36,8 @@ void writeLumpedRow(std::ostream& csv, const cardiac::StepSample& sample) {
 }  // namespace
 
 void writeMetricsHeader(std::ostream& csv, const MetricsColumns& columns) {
+  // lv_kinetic_energy_uj: of the smoothed velocity (cardiac/blood/ventricle_blood.h); the
+  // Doppler columns: each orifice's reading (m/s, cardiac/blood/echo_velocities.h).
   // phase: the heart's, from the valves (cardiac/circulation/heart_phase.h); wall_phase: the
   // wall's own clock (systole, diastole, rest), which says when a beat starts.
   csv << "step,time_s,phase,wall_phase";
@@ -45,7 +48,8 @@ void writeMetricsHeader(std::ostream& csv, const MetricsColumns& columns) {
   if (columns.flows)
     csv << ",mitral_open,aortic_open,particles_inflow_vessel,particles_lv,particles_outflow_vessel,"
            "particles_returning,particles_outside,mitral_forward_ml,mitral_backward_ml,aortic_forward_ml,"
-           "aortic_backward_ml,pressure_inflow_vessel_pa,pressure_lv_pa,pressure_outflow_vessel_pa,lv_kinetic_energy_uj";
+           "aortic_backward_ml,pressure_inflow_vessel_pa,pressure_lv_pa,pressure_outflow_vessel_pa,lv_kinetic_energy_uj,"
+           "aortic_doppler_m_s,mitral_doppler_m_s";
   if (columns.lumped)
     csv << ",lv_pressure_mmhg,aortic_pressure_mmhg,la_pressure_mmhg,lumped_lv_volume_ml,lumped_mitral_flow_ml_s,"
            "lumped_aortic_flow_ml_s,lumped_mitral_open,lumped_aortic_open,activation_ventricle,activation_atrium,"

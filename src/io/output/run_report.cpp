@@ -35,6 +35,8 @@ void addCirculationReport(nlohmann::ordered_json& heart, const cardiac::Circulat
   heart["e_to_a"] = measured && m.eToA ? nlohmann::ordered_json(*m.eToA) : nlohmann::ordered_json();
   heart["regurgitant_fraction"] = figure(m.regurgitantFraction);
   heart["aortic_mean_gradient_mmhg"] = figure(m.aorticMeanGradient / mmHg);
+  // The fastest single particle through the aortic disc (FlowStep::aorticJet): PBF's particle
+  // noise rides on it, so it is not what echocardiography reads; aortic_peak_velocity_m_s is.
   heart["aortic_peak_jet_m_s"] = figure(m.aorticJet);
   heart["lumped_stroke_volume_ml"] = figure(m.strokeVolume * kClinical.volume);
   heart["both_valves_open_steps"] = recorder.bothValvesOpenSteps();
@@ -113,6 +115,34 @@ void addVentricleBloodReport(nlohmann::ordered_json& heart, const cardiac::Ventr
       measured ? nlohmann::ordered_json(peak / double(cycles) * perMl) : nullptr;
 }
 
+// The Doppler peaks in the orifices (cardiac/blood/echo_velocities.h), cycle by cycle (end-diastole
+// to end-diastole) and their means over the cycles after the first two, in m/s: the aortic peak
+// in ejection, the mitral E before the atrial kick and A during it (null in a cycle without one;
+// the mean over the cycles with one, null if none had).
+void addEchoReport(nlohmann::ordered_json& heart, const cardiac::EchoVelocities& echo) {
+  constexpr std::size_t kSkipped = 2;  // as the flow components: the blood settles into its path
+  nlohmann::ordered_json beats = nlohmann::json::array();
+  double aortic = 0, e = 0, a = 0;
+  std::size_t counted = 0, withA = 0;
+  for (std::size_t k = 0; k < echo.cycles().size(); ++k) {
+    const cardiac::CycleEcho& c = echo.cycles()[k];
+    beats.push_back({{"start_s", c.start},
+                     {"end_s", c.end},
+                     {"aortic_peak_velocity_m_s", c.aorticPeak},
+                     {"mitral_e_m_s", c.mitralE},
+                     {"mitral_a_m_s", c.mitralA ? nlohmann::ordered_json(*c.mitralA) : nlohmann::ordered_json()}});
+    if (k < kSkipped) continue;
+    ++counted;
+    aortic += c.aorticPeak, e += c.mitralE;
+    if (c.mitralA) a += *c.mitralA, ++withA;
+  }
+  auto mean = [](double sum, std::size_t n) { return n > 0 ? nlohmann::ordered_json(sum / double(n)) : nlohmann::ordered_json(); };
+  heart["aortic_peak_velocity_m_s"] = mean(aortic, counted);
+  heart["mitral_e_m_s"] = mean(e, counted);
+  heart["mitral_a_m_s"] = mean(a, withA);
+  heart["echo_beats"] = beats;
+}
+
 // The wall's part: mesh, volume errors, cavity and beats.
 // [motion]: the recorded beat's own volumes beside the 3D heart's (null without a recording).
 nlohmann::ordered_json motionReport(const cardiac::RunSummary& run) {
@@ -169,6 +199,7 @@ void addHeartReport(nlohmann::ordered_json& report, const cardiac::RunSummary& r
   report["heart"] = heartPumpReport(run.beats);
   if (run.circulation) addCirculationReport(report["heart"], *run.circulation);
   if (run.ventricleBlood) addVentricleBloodReport(report["heart"], *run.ventricleBlood, run.beats);
+  if (run.echo) addEchoReport(report["heart"], *run.echo);
   report["motion"] = motionReport(run);
 }
 
@@ -184,6 +215,9 @@ nlohmann::ordered_json bloodReport(const cardiac::RunSummary& run, int iteration
       {"mean_neighbours", b.meanNeighbours},
       {"max_speed_m_s", b.maxSpeed},
       {"max_speed_run_m_s", run.bloodSpeedMax},
+      // The smoothed field's largest speed over the run (with a circulation; 0 otherwise): the
+      // hottest colour the viewer's and `render`'s speed scale shows.
+      {"smoothed_speed_max_run_m_s", run.smoothedSpeedMax},
       {"iterations", iterations},
   };
 }

@@ -89,6 +89,37 @@ TEST(FlowMeter, ParkedBloodIsNotMeasured) {
   EXPECT_EQ(std::accumulate(count.begin(), count.end(), std::size_t(0)), 1u);
 }
 
+// The Doppler readings (echo_velocities.h): the mean of the smoothed velocity along each disc's
+// forward normal over the active blood within one spacing of the disc and inside its rim.
+TEST(FlowMeter, DopplerReadsTheSlabsMeanSmoothedVelocityAlongTheNormal) {
+  const Orifice& aortic = path().aorticValve();
+  const Orifice& mitral = path().mitralValve();
+  const Real d = kBlood.spacing;
+  const Vec3 side = aortic.forward.unitOrthogonal();
+  Scene s({aortic.centre + Real(0.5) * d * aortic.forward,                             // in the slab
+           aortic.centre - Real(0.9) * d * aortic.forward + Real(0.5) * aortic.radius * side,  // in
+           aortic.centre + Real(1.5) * d * aortic.forward,                             // beyond one spacing
+           aortic.centre + Real(1.1) * aortic.radius * side,                           // outside the rim
+           aortic.centre,                                                              // parked
+           mitral.centre + Real(0.2) * d * mitral.forward});                           // the mitral slab
+  s.particles.state[s.first + 4] = pbd::ParticleState::Parked;
+  std::vector<Vec3> smoothed(s.particles.size(), Vec3::Zero());
+  smoothed[s.first + 0] = Real(1.2) * aortic.forward + Real(5) * side;  // the side component is not read
+  smoothed[s.first + 1] = Real(0.8) * aortic.forward;
+  smoothed[s.first + 2] = smoothed[s.first + 3] = smoothed[s.first + 4] = Real(40) * aortic.forward;
+  smoothed[s.first + 5] = Real(0.7) * mitral.forward;
+  // Particles' own velocities are not read.
+  for (Vec3& v : s.particles.velocity) v = Vec3::Constant(99);
+  FlowMeter meter(path(), kBlood, 0);
+  meter.begin(s.particles, s.first);
+  meter.measure(s.particles, s.first, kNoPressure, ValveStates{}, 1, smoothed);
+  EXPECT_NEAR(meter.lastStep().aorticEcho, (1.2 + 0.8) / 2, 1e-5);
+  EXPECT_NEAR(meter.lastStep().mitralEcho, 0.7, 1e-5);
+  // Without the smoothed field there is no reading.
+  meter.measure(s.particles, s.first, kNoPressure, ValveStates{});
+  EXPECT_EQ(meter.lastStep().aorticEcho, 0.0);
+}
+
 // Blood in known places: 2 in the inflow vessel, 3 in the ventricle, 1 in the outflow vessel,
 // 1 outside, 1 parked; the wall vertex is not blood.
 struct Regions {

@@ -96,7 +96,8 @@ TEST(RunReport, BloodPartTakesTheRunsWorst) {
   const auto& blood = report["blood"];
   EXPECT_EQ(keys(blood), (std::vector<std::string>{"particles", "lost", "inside_wall", "density_error_mean",
                                                    "density_error_max", "full_neighbourhood", "mean_neighbours",
-                                                   "max_speed_m_s", "max_speed_run_m_s", "iterations"}));
+                                                   "max_speed_m_s", "max_speed_run_m_s", "smoothed_speed_max_run_m_s",
+                                                   "iterations"}));
   EXPECT_EQ(blood["lost"], 4);
   EXPECT_EQ(report["steps_per_s"], 0.0) << "no time measured";
   const std::string line = runSummaryLine(scenario(), RunTiming{}, run, "d");
