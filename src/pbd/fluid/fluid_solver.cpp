@@ -182,9 +182,12 @@ void FluidSolver::smoothedVelocities(const Particles& particles, std::vector<Vec
     m_smoothV[k] = particles.velocity[i];
     m_smoothVolume[k] = particles.active(i) ? volume : Real(0);
   }
+  // Parked particles are not evaluated (their entries stay 0): nothing reads them.
   m_smoothSubset.clear();
-  for (std::size_t k = 0; k < m_slotParticle.size(); ++k)
-    if (wanted.empty() || wanted[m_slotParticle[k]]) m_smoothSubset.push_back(Index(k));
+  for (std::size_t k = 0; k < m_slotParticle.size(); ++k) {
+    const Index i = m_slotParticle[k];
+    if (particles.active(i) && (wanted.empty() || wanted[i])) m_smoothSubset.push_back(Index(k));
+  }
   smoothVelocities(m_smoothX, m_smoothV, m_smoothVolume, m_lists, m_smoothSubset, m_kernels, m_smoothOut, threads);
   for (const Index k : m_smoothSubset) smoothed[m_slotParticle[k]] = m_smoothOut[k];
 }

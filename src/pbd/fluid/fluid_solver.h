@@ -107,8 +107,9 @@ class FluidSolver {
   // The smoothed velocity v~ (velocity_field.h) at the particles' current positions and
   // velocities, over the neighbour lists of the last solve, written to smoothed[i] by particle
   // index (resized to particles.size(); entries of particles not evaluated are 0). `wanted`,
-  // by particle index: evaluate only where nonzero (empty: every fluid particle). A parked
-  // particle weighs nothing (V = 0). Empty before the first solve or after the fluid set changed.
+  // by particle index: evaluate only where nonzero (empty: every active fluid particle). A parked
+  // particle weighs nothing (V = 0) and is not evaluated. All 0 before the first solve or after
+  // the fluid set changed.
   // A measurement: the particles are not touched.
   void smoothedVelocities(const Particles& particles, std::vector<Vec3>& smoothed, int threads,
                           std::span<const std::uint8_t> wanted = {});

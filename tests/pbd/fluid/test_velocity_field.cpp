@@ -175,6 +175,7 @@ TEST(VelocityField, SolverSmoothsByParticleOverItsLastLists) {
   std::vector<Vec3> out;
   solver.smoothedVelocities(particles, out, 2);
   ASSERT_EQ(out.size(), particles.size());
+  EXPECT_TRUE(out[0].isZero()) << "a parked particle is not evaluated";
   for (std::size_t i = 1; i < out.size(); ++i) EXPECT_LE((out[i] - u).norm(), 64 * kEps) << i;
   std::vector<std::uint8_t> wanted(particles.size(), 0);
   wanted[5] = 1;
