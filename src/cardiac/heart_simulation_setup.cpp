@@ -338,8 +338,11 @@ void HeartSimulation::buildBlood() {
     // The vessels' fill is measured on their lumens between the ends' buffers.
     m_vesselSites = vesselSites(m_scenario, *m_model);
     if (m_ends) m_vesselSites.drop([&](const Vec3& site) { return m_ends->inBuffer(site); });
-    if (m_lumped && m_scenario.circulation.aorticValveArea > 0)
-      m_circulation->valves.narrowAorticOpening(std::sqrt(m_scenario.circulation.aorticValveArea / std::numbers::pi_v<Real>));
+    if (m_lumped && m_scenario.circulation.aorticValveArea > 0) {
+      const Real opening = std::sqrt(m_scenario.circulation.aorticValveArea / std::numbers::pi_v<Real>);
+      m_circulation->valves.narrowAorticOpening(opening);
+      m_circulation->meter.narrowAorticOpening(opening);
+    }
   }
   m_fluid = std::make_unique<pbd::FluidSolver>(bloodSolverSettings(m_scenario));
   const Real inverseMass = Real(1) / m_fluid->settings().fluid.particleMass;

@@ -47,12 +47,13 @@ struct ValveSample {
 };
 
 // A Doppler sample volume in an orifice (echo_velocities.h): the smoothed velocity along the
-// disc's forward normal, summed over the blood within `slab` of the disc, inside its rim.
+// disc's forward normal, summed over the blood within `slab` of the disc, inside its rim or the
+// valve's narrower opening.
 struct DopplerSample {
   double sum = 0;
   std::size_t count = 0;
-  void add(const Orifice& o, const Vec3& x, const Vec3& smoothed, Real slab) {
-    if (std::abs(o.side(x)) > slab || o.radial(x) >= o.radius) return;
+  void add(const Orifice& o, const Vec3& x, const Vec3& smoothed, Real slab, Real opening) {
+    if (std::abs(o.side(x)) > slab || o.radial(x) >= std::min(o.radius, opening)) return;
     sum += double(o.forward.dot(smoothed));
     ++count;
   }
@@ -99,8 +100,8 @@ void FlowMeter::measure(const pbd::Particles& particles, Index first, const std:
     mitral.add(m_path.mitralValve(), x1, p, slab);
     aortic.add(m_path.aorticValve(), x1, p, slab);
     if (doppler) {
-      mitralDoppler.add(m_path.mitralValve(), x1, smoothed[i], m_spacing);
-      aorticDoppler.add(m_path.aorticValve(), x1, smoothed[i], m_spacing);
+      mitralDoppler.add(m_path.mitralValve(), x1, smoothed[i], m_spacing, m_path.mitralValve().radius);
+      aorticDoppler.add(m_path.aorticValve(), x1, smoothed[i], m_spacing, m_aorticOpening);
     }
   }
   s.mitralEcho = mitralDoppler.mean();

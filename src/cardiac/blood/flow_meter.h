@@ -7,6 +7,7 @@
 // (echo_velocities.h).
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -30,8 +31,8 @@ struct FlowStep {
   // rides on it (~0.5 m/s), so it is not the jet's velocity; aorticEcho is.
   double aorticJet = 0;
   // m/s, the Doppler readings (echo_velocities.h): the mean over the blood within one spacing of
-  // each valve's disc, inside its rim, of the smoothed velocity along the disc's forward normal;
-  // 0 with no blood there or no smoothed field given.
+  // each valve's disc, inside its rim (a stenotic valve's opening), of the smoothed velocity along
+  // the disc's forward normal; 0 with no blood there or no smoothed field given.
   double aorticEcho = 0, mitralEcho = 0;
   std::size_t returned = 0;   // particles that left through a vessel end this step
   std::size_t reentered = 0;  // parked particles that re-entered the inflow vessel
@@ -69,6 +70,9 @@ class FlowMeter {
   // Measure at the orifices where they are now (a descending base carries them); call before
   // begin(): a step's crossings are counted against one plane.
   void follow(const FlowPath& path) { m_path = path; }
+  // A stenotic aortic valve opens to a central disc of this radius (Valves::narrowAorticOpening):
+  // the Doppler reading samples the opening, not the closed cusps around it.
+  void narrowAorticOpening(Real radius) { m_aorticOpening = radius; }
   // Checkpoints: the last step (the valves' pressure mode reads it); the start positions and
   // the orifices are set anew at every step's start.
   void save(pbd::StateWriter& w) const;
@@ -77,6 +81,7 @@ class FlowMeter {
  private:
   FlowPath m_path;
   Real m_radius, m_spacing, m_particleVolume;
+  Real m_aorticOpening = std::numeric_limits<Real>::infinity();  // m, see narrowAorticOpening
   double m_atrialPressurePa;
   std::vector<Vec3> m_start;          // blood start-of-step positions (blood index)
   std::vector<FlowRegion> m_regions;  // scratch: each blood particle's region this step

@@ -118,6 +118,10 @@ TEST(FlowMeter, DopplerReadsTheSlabsMeanSmoothedVelocityAlongTheNormal) {
   // Without the smoothed field there is no reading.
   meter.measure(s.particles, s.first, kNoPressure, ValveStates{});
   EXPECT_EQ(meter.lastStep().aorticEcho, 0.0);
+  // A stenotic valve's opening (a central disc of a third of the rim): only the blood in it.
+  meter.narrowAorticOpening(aortic.radius / 3);
+  meter.measure(s.particles, s.first, kNoPressure, ValveStates{}, 1, smoothed);
+  EXPECT_NEAR(meter.lastStep().aorticEcho, 1.2, 1e-5);
 }
 
 // Blood in known places: 2 in the inflow vessel, 3 in the ventricle, 1 in the outflow vessel,
