@@ -104,6 +104,7 @@ RunMonitor::RunMonitor(const HeartSimulation& sim, MonitorSettings settings)
   if (sim.lumped() && settings.pump)
     m_circulation.emplace(double(sim.scenario().simulation.dt), settings.lumpedSamples);
   if (sim.circulation() && sim.hasBlood() && settings.pump) m_ventricleBlood.emplace(sim.particles(), sim.firstBloodParticle());
+  if (sim.lumped() && sim.hasBlood() && settings.pump) m_fillingVortex.emplace();
   // The wall's surface hinges that are smooth at rest (bent by less than kSmoothHinge) and their
   // angles (the model's vertices are the first particles, heart_simulation.h), to find creases:
   // a crease is a fold where the surface was smooth. The modelled corners (the base's rim, the
@@ -161,6 +162,7 @@ const Verdict& RunMonitor::observe() {
   if (m_ventricleBlood && sample.circulation)
     sample.ventricleKineticEnergy = m_ventricleBlood->observe(m_sim.particles(), m_sim.circulation()->meter.regions(),
                                                               m_last.heartPhase, sample.heartPhase, sample.time);
+  if (m_fillingVortex && sample.lumped) watchFillingVortex(sample);
   ++m_observed;
   m_extremes.add(sample, m_sim.hasHeart() && m_settings.pump);
   if (m_sim.hasHeart() && m_settings.beatList) m_beats.record(sample.startTime, sample.phase, sample.cavity, sample.flows);
@@ -204,6 +206,25 @@ void RunMonitor::recordCirculation(const StepSample& sample) {
   m_circulation->record(step);
 }
 
+// Early filling: the heart's phase is filling and the atrium has not begun its kick (the E
+// wave, heart_phase.h). The field is read only on a step whose lumped mitral flow is the beat's
+// largest yet (filling_vortex.h): the cut's grid half a blood spacing fine, the Shepard average
+// over the blood's own support radius, a node filled where the blood covers 30% of its support
+// (a node on the wall has about half).
+void RunMonitor::watchFillingVortex(const StepSample& sample) {
+  const bool early = sample.heartPhase == HeartPhase::Filling && sample.lumped->atrialActivation <= 0;
+  if (!m_fillingVortex->step(early, sample.lumped->mitralFlow)) return;
+  const LvModel& model = m_sim.model();
+  const std::vector<Vec3>& positions = m_sim.particles().position;
+  const LongAxisCut cut = longAxisCut(model, model.flowPath.descended(Real(sample.baseDescent)), positions);
+  const BloodSettings& blood = m_sim.scenario().blood;
+  const pbd::PlaneGrid grid = longAxisGrid(cut, model, positions, 0.5 * double(blood.spacing));
+  const pbd::PlaneSampling sampling{m_sim.firstBloodParticle(), double(m_sim.circulation()->meter.particleVolume()),
+                                    double(blood.supportRadius), 0.3};
+  m_fillingVortex->keep(
+      readEVortex(cut, pbd::sampleOnPlane(grid, m_sim.particles(), sampling), sample.time, sample.lumped->mitralFlow));
+}
+
 RunSummary RunMonitor::summary() const {
   RunSummary r;
   r.steps = m_observed;
@@ -214,6 +235,7 @@ RunSummary RunMonitor::summary() const {
   r.beats = m_beats;
   r.circulation = m_circulation;
   r.ventricleBlood = m_ventricleBlood;
+  r.fillingVortex = m_fillingVortex;
   const RunExtremes& e = m_extremes;
   if (r.heart) {
     const LvModel& model = m_sim.model();
@@ -312,6 +334,8 @@ void RunMonitor::save(pbd::StateWriter& w) const {
   if (m_circulation) m_circulation->save(w);
   w.put(m_ventricleBlood.has_value());
   if (m_ventricleBlood) m_ventricleBlood->save(w);
+  w.put(m_fillingVortex.has_value());
+  if (m_fillingVortex) m_fillingVortex->save(w);
   w.fields(m_extremes, m_observed);
 }
 
@@ -332,6 +356,12 @@ void RunMonitor::load(pbd::StateReader& r) {
     throw pbd::StateError("run monitor: the ventricle's blood figures are saved for a run without blood or missing",
                           r.offset());
   if (m_ventricleBlood) m_ventricleBlood->load(r);
+  bool fillingVortex = false;
+  r.get(fillingVortex);
+  if (fillingVortex != m_fillingVortex.has_value())
+    throw pbd::StateError("run monitor: the filling vortex's figures are saved for a run without them or missing",
+                          r.offset());
+  if (m_fillingVortex) m_fillingVortex->load(r);
   r.fields(m_extremes, m_observed);
   // The density error is averaged over the last second before this run's end: a window that
   // begins after the checkpoint starts empty; one that began before it keeps what it holds.

@@ -14,6 +14,7 @@
 
 #include "cardiac/anatomy/lv_model.h"
 #include "cardiac/blood.h"
+#include "cardiac/blood/filling_vortex.h"
 #include "cardiac/blood/ventricle_blood.h"
 #include "cardiac/circulation.h"
 #include "cardiac/circulation/beat_metrics.h"
@@ -145,6 +146,8 @@ struct RunSummary {
   // Heart and blood with valves: the flow components of each beat and the blood's kinetic
   // energy over each cycle (ventricle_blood.h).
   std::optional<VentricleBlood> ventricleBlood;
+  // circulation.lumped with blood: the E-wave filling vortex of each beat (filling_vortex.h).
+  std::optional<FillingVortex> fillingVortex;
   // [motion]: the recorded beat's frame volumes (m^3; empty without one), its period (s) and the
   // largest relative difference of the 3D cavity from the recorded volume over the run.
   std::vector<double> motionFrameVolumes;
@@ -189,6 +192,8 @@ class RunMonitor {
   [[nodiscard]] const BeatTracker& beats() const { return m_beats; }
   // Heart and blood with valves, figures gathered: the blood's own figures; null otherwise.
   [[nodiscard]] const VentricleBlood* ventricleBlood() const { return m_ventricleBlood ? &*m_ventricleBlood : nullptr; }
+  // circulation.lumped and blood, figures gathered: the E-wave filling vortex; null otherwise.
+  [[nodiscard]] const FillingVortex* fillingVortex() const { return m_fillingVortex ? &*m_fillingVortex : nullptr; }
   // circulation.lumped with figures gathered (MonitorSettings::pump); null otherwise.
   [[nodiscard]] const CirculationRecorder* circulation() const { return m_circulation ? &*m_circulation : nullptr; }
   [[nodiscard]] const RunExtremes& extremes() const { return m_extremes; }
@@ -209,6 +214,7 @@ class RunMonitor {
   BeatTracker m_beats;
   std::optional<CirculationRecorder> m_circulation;
   std::optional<VentricleBlood> m_ventricleBlood;
+  std::optional<FillingVortex> m_fillingVortex;
   RunExtremes m_extremes;
   std::int64_t m_observed = 0;
   std::vector<pbd::Hinge> m_hinges;     // of the wall's surface, with a heart
@@ -217,6 +223,7 @@ class RunMonitor {
   [[nodiscard]] bool bloodLimited() const;
   void gather(StepSample& sample) const;
   void recordCirculation(const StepSample& sample);
+  void watchFillingVortex(const StepSample& sample);
 };
 
 }  // namespace hs::cardiac

@@ -33,8 +33,8 @@ struct CheckpointError : std::runtime_error {
 };
 
 // 3: the blood's push on the wall in the run monitor; 4: the heart's phase; 5: the ventricle's
-// blood (flow components, kinetic energy)
-inline constexpr std::uint32_t kCheckpointVersion = 5;
+// blood (flow components, kinetic energy); 6: the E-wave filling vortex
+inline constexpr std::uint32_t kCheckpointVersion = 6;
 
 struct Checkpoint {
   std::string scenarioToml;

@@ -23,6 +23,24 @@ std::vector<double> planeVorticity(const PlaneField& field) {
   return omega;
 }
 
+std::vector<double> planeSwirl(const PlaneField& field) {
+  const PlaneGrid& g = field.grid;
+  std::vector<double> swirl(g.size(), std::numeric_limits<double>::quiet_NaN());
+  const double twoS = 2 * g.spacing;
+  for (int j = 0; j < g.rows; ++j)
+    for (int i = 0; i < g.columns; ++i) {
+      if (!field.isFilled(i - 1, j) || !field.isFilled(i + 1, j) || !field.isFilled(i, j - 1) ||
+          !field.isFilled(i, j + 1))
+        continue;
+      const std::size_t e = g.index(i + 1, j), w = g.index(i - 1, j), n = g.index(i, j + 1), s = g.index(i, j - 1);
+      const double a = (field.vu[e] - field.vu[w]) / twoS, b = (field.vu[n] - field.vu[s]) / twoS;
+      const double c = (field.vv[e] - field.vv[w]) / twoS, d = (field.vv[n] - field.vv[s]) / twoS;
+      const double discriminant = (a - d) * (a - d) + 4 * b * c;
+      swirl[g.index(i, j)] = discriminant < 0 ? 0.5 * std::sqrt(-discriminant) : 0.0;
+    }
+  return swirl;
+}
+
 namespace {
 
 // |omega| at (i, j) is at least that of each differenced 8-neighbour of the same sign.
@@ -41,7 +59,8 @@ bool isPeak(const PlaneGrid& g, const std::vector<double>& omega, int i, int j) 
 
 }  // namespace
 
-std::vector<VortexCore> findVortexCores(const PlaneGrid& g, const std::vector<double>& omega, double minPeak) {
+std::vector<VortexCore> findVortexCores(const PlaneGrid& g, const std::vector<double>& omega, double minPeak,
+                                        const std::vector<double>* swirl) {
   // Candidates in order of falling |omega| (ties by node index: the same order every time).
   std::vector<std::size_t> order;
   for (std::size_t k = 0; k < omega.size(); ++k)
@@ -55,6 +74,7 @@ std::vector<VortexCore> findVortexCores(const PlaneGrid& g, const std::vector<do
   for (const std::size_t start : order) {
     const int si = int(start % std::size_t(g.columns)), sj = int(start / std::size_t(g.columns));
     if (claimed[start] || !isPeak(g, omega, si, sj)) continue;
+    if (swirl && !((*swirl)[start] >= kSwirlShare * 0.5 * std::abs(omega[start]))) continue;
     const double peak = omega[start];
     const double half = 0.5 * std::abs(peak);
     VortexCore core;

@@ -124,6 +124,40 @@ TEST(VortexCores, RingCutOnTheNodesHoldsHalfItsCirculation) {
   }
 }
 
+// A vortex's centre swirls as a solid-body turn (lambda_ci = |omega| / 2), and the finder with
+// the swirl criterion finds the same cores.
+TEST(VortexCores, RingCutsCoresSwirl) {
+  const Particles particles = jitteredParticles(ringCut);
+  const PlaneGrid grid = xyGrid();
+  const PlaneField field = sampleOnPlane(grid, particles, sampling());
+  const std::vector<double> omega = planeVorticity(field), swirl = planeSwirl(field);
+  const std::vector<VortexCore> all = findVortexCores(grid, omega, 5.0);
+  const std::vector<VortexCore> swirling = findVortexCores(grid, omega, 5.0, &swirl);
+  ASSERT_GE(swirling.size(), 2u);
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_EQ(swirling[k].position, all[k].position);
+    EXPECT_EQ(swirling[k].circulation, all[k].circulation);
+  }
+  // At the analytic centre the swirl is half the vorticity, within the smoothing's noise.
+  const std::size_t centre = grid.index(int(std::lround((0.030 - kHalfDistance) / grid.spacing)), int(std::lround(0.030 / grid.spacing)));
+  EXPECT_NEAR(swirl[centre], 0.5 * std::abs(omega[centre]), 0.1 * std::abs(omega[centre]));
+}
+
+// A shear layer, v_x = U tanh(y / delta), has strong vorticity (U / delta on its midline) but
+// does not swirl: the vorticity finder finds its ridge, the swirl criterion refuses it.
+TEST(VortexCores, ShearLayerDoesNotSwirl) {
+  const auto shear = [](const Vec3d& x) {
+    // A slight bump along x makes the ridge's peak a single node.
+    return Vec3d(0.5 * std::tanh(x.y() / 0.006) * (1 + 0.2 * std::exp(-x.x() * x.x() / 1e-4)), 0, 0);
+  };
+  const Particles particles = jitteredParticles(shear);
+  const PlaneGrid grid = xyGrid();
+  const PlaneField field = sampleOnPlane(grid, particles, sampling());
+  const std::vector<double> omega = planeVorticity(field), swirl = planeSwirl(field);
+  EXPECT_FALSE(findVortexCores(grid, omega, 5.0).empty());
+  EXPECT_TRUE(findVortexCores(grid, omega, 5.0, &swirl).empty());
+}
+
 TEST(VortexCores, UniformFlowHasNoVortex) {
   const Particles particles = jitteredParticles([](const Vec3d&) { return Vec3d(0.3, -0.5, 0.1); });
   const PlaneGrid grid = xyGrid();
