@@ -63,6 +63,14 @@ EVortexView readEVortex(const LongAxisCut& cut, pbd::PlaneField field, double ti
     const int sign = c.circulation > 0 ? 0 : 1;
     if (view.ring[std::size_t(sign)] < 0 && cut.depth(c.position) > 0) view.ring[std::size_t(sign)] = k;
   }
+  // A ring cut through its axis shows two equal cores; a partner with less than kPartnerShare of
+  // the other's circulation is an eddy of the particle noise elsewhere in the cavity, not the
+  // ring's other side: the ring is read from the stronger core alone.
+  if (view.ring[0] >= 0 && view.ring[1] >= 0) {
+    const double g0 = std::abs(view.cores[std::size_t(view.ring[0])].circulation);
+    const double g1 = std::abs(view.cores[std::size_t(view.ring[1])].circulation);
+    if (std::min(g0, g1) < kPartnerShare * std::max(g0, g1)) view.ring[g0 < g1 ? 0 : 1] = -1;
+  }
   int found = 0;
   for (int sign = 0; sign < 2; ++sign) {
     if (view.ring[std::size_t(sign)] < 0) continue;

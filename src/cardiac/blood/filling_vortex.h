@@ -37,6 +37,8 @@ using pbd::Vec3d;
 // ~100/s (an E wave of 0.7 m/s shed across a shear layer of ~5 mm); PBF's noise in a still
 // ventricle stays at a few per second after the Shepard average.
 inline constexpr double kVortexMinPeak = 10.0;  // 1/s
+// The ring's second core holds at least this share of the first's circulation (readEVortex).
+inline constexpr double kPartnerShare = 0.25;
 
 // The long-axis cut's frame, where the wall is now.
 struct LongAxisCut {
@@ -79,7 +81,8 @@ struct EVortexView {
 pbd::PlaneGrid longAxisGrid(const LongAxisCut& cut, const LvModel& model, std::span<const pbd::Vec3> positions,
                             double nodeSpacing);
 
-// The ring from the field on the cut: the strongest core of each sign below the mitral plane.
+// The ring from the field on the cut: the strongest core of each sign below the mitral plane,
+// the weaker dropped when it holds less than kPartnerShare of the stronger's circulation.
 EVortexView readEVortex(const LongAxisCut& cut, pbd::PlaneField field, double time, double mitralFlow);
 
 // One beat's E-vortex: its early filling's index in the run (1 = the first), whether the run saw

@@ -147,5 +147,44 @@ TEST(FillingVortex, RingPositionIsTheCoresDepthOverTheLongAxis) {
   EXPECT_EQ(view.sample.time, 0.4);
 }
 
+// A weak eddy deep in the cavity is not the ring's other side: the ring is the strong core alone.
+TEST(FillingVortex, AWeakPartnerIsNotTheRing) {
+  LongAxisCut cut;
+  cut.mitralCentre = Vec3d::Zero();
+  cut.axisAtMitralPlane = Vec3d(0.01, 0, 0);
+  cut.longAxis = 0.060;
+  pbd::PlaneField field;
+  pbd::PlaneGrid& g = field.grid;
+  g.spacing = 0.001;
+  g.u = cut.across;
+  g.v = cut.down;
+  g.origin = Vec3d(-0.04, 0.005, 0);
+  g.columns = g.rows = 81;
+  field.vu.assign(g.size(), 0.0);
+  field.vv.assign(g.size(), 0.0);
+  field.fill.assign(g.size(), 1.0);
+  field.filled.assign(g.size(), 1);
+  const auto add = [&](double gamma, double u0, double v0) {
+    for (int j = 0; j < g.rows; ++j)
+      for (int i = 0; i < g.columns; ++i) {
+        const Vec3d x = g.node(i, j);
+        const double du = cut.across.dot(x - cut.mitralCentre) - u0, dv = cut.depth(x) - v0, r2 = du * du + dv * dv;
+        if (r2 < 1e-14) continue;
+        const double f = gamma / (2 * std::numbers::pi * r2) * (1 - std::exp(-r2 / 16e-6));
+        field.vu[g.index(i, j)] += -f * dv;
+        field.vv[g.index(i, j)] += f * du;
+      }
+  };
+  add(0.02, 0.0, 0.006);     // the ring's core, 6 mm deep
+  add(-0.002, 0.01, 0.045);  // an eddy a tenth as strong, 45 mm deep
+  const EVortexView view = readEVortex(cut, field, 0.4, 500e-6);
+  ASSERT_TRUE(view.sample.found);
+  EXPECT_GE(view.ring[0], 0);
+  EXPECT_EQ(view.ring[1], -1);
+  EXPECT_NEAR(view.sample.depth, 0.006, 0.001);
+  EXPECT_NEAR(view.sample.circulation, 0.01, 0.001);
+  EXPECT_EQ(view.sample.coreCirculation[1], 0.0);
+}
+
 }  // namespace
 }  // namespace hs::cardiac
