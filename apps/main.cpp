@@ -107,6 +107,9 @@ void addRenderCommand(CLI::App& app, Commands& c) {
   renderApp->add_option("--labels", render.labels, "Names on the heart: off or anatomy")->capture_default_str();
   renderApp->add_option("--pressure-max", render.pressureMax,
                         "Blood pressure (mmHg) at the top of the pressure colour scale (0: from the scenario)");
+  renderApp->add_option("--e-vortex", render.eVortexBeat,
+                        "Draw the E-wave filling vortex in the long-axis cut at the E peak of this beat (1 = the first "
+                        "filling) instead of the views; needs circulation.lumped and blood");
   addThreadsOption(renderApp, render.threads);
   addResolutionOption(renderApp, render.resolution);
   addSetOption(renderApp, render.overrides);

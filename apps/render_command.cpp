@@ -22,6 +22,7 @@
 #include "render/gl_context.h"
 #include "render/renderer.h"
 #include "render/scene.h"
+#include "render/vortex_cut.h"
 #include "simulation_setup.h"
 #include "viz/image.h"
 
@@ -252,6 +253,69 @@ int drawTimes(cardiac::HeartSimulation& sim, Offscreen& out, const RenderPlan& p
   return kExitOk;
 }
 
+// --e-vortex: steps to the end of beat `beat`'s early filling under a monitor that reads the
+// filling vortex (cardiac/run_monitor.h), then draws its view at the E peak.
+int renderEVortex(const RenderOptions& options, const cardiac::Scenario& scenario) {
+  const int beat = *options.eVortexBeat;
+  fs::path outDir;
+  int height = 0;
+  try {
+    if (beat < 1) throw BadInput{"--e-vortex: beat " + std::to_string(beat) + " is not a beat (give 1 or more)"};
+    if (!scenario.circulation.lumped || !scenario.blood.enabled)
+      throw BadInput{"--e-vortex: scenario '" + scenario.name +
+                     "' has no lumped circulation with blood (circulation.lumped and blood.enabled), whose E wave the "
+                     "filling vortex is read at"};
+    height = parseSize(options.size).second;
+    outDir = options.outDir.empty() ? io::defaultOutputFolder(scenario.name) / "render" : fs::path(options.outDir);
+    prepareOutputDir(outDir);
+  } catch (const BadInput& e) {
+    std::cerr << "heartsim: error: " << e.message << '\n';
+    return kExitBadInput;
+  } catch (const WriteFailure& e) {
+    std::cerr << "heartsim: error: " << e.message << '\n';
+    return kExitFailure;
+  }
+  const int threads = options.threads > 0 ? options.threads : omp_get_num_procs();
+  int setupError = kExitOk;
+  const std::unique_ptr<cardiac::HeartSimulation> sim = makeSimulation(scenario, threads, options.scenario, setupError);
+  if (!sim) return setupError;
+  cardiac::MonitorSettings settings;
+  settings.beatList = false;
+  cardiac::RunMonitor monitor(*sim, settings);
+  const double dt = double(scenario.simulation.dt);
+  const auto lastStep = static_cast<std::int64_t>(std::llround(double(scenario.simulation.duration) / dt));
+  ProgressBar progress(static_cast<long>(lastStep));
+  const cardiac::FillingVortex* vortex = monitor.fillingVortex();
+  while (vortex && int(vortex->beats().size()) < beat && sim->stepCount() < lastStep) {
+    sim->step();
+    if (const cardiac::Verdict& verdict = monitor.observe(); !verdict.healthy()) {
+      progress.finish();
+      std::cerr << "heartsim: error: " << verdict.message() << '\n';
+      return kExitInvalidSimulation;
+    }
+    progress.update(static_cast<long>(sim->stepCount()), sim->time());
+  }
+  progress.finish();
+  if (!vortex || int(vortex->beats().size()) < beat || !vortex->lastBeatView()) {
+    std::cerr << "heartsim: error: --e-vortex: the run ended at " << formatTime(sim->time()) << " s before beat " << beat
+              << "'s early filling ended (lengthen it with --set simulation.duration=...)\n";
+    return kExitFailure;
+  }
+  const cardiac::EVortexView& view = *vortex->lastBeatView();
+  const std::string title = scenario.name + ": the E-wave filling vortex in the long-axis cut, beat " +
+                            std::to_string(beat) + ", E peak at t = " + formatTime(view.sample.time) + " s (mitral flow " +
+                            std::to_string(int(std::lround(view.sample.mitralFlow * 1e6))) + " mL/s)";
+  const fs::path file = outDir / ("e_vortex_beat" + std::to_string(beat) + ".png");
+  try {
+    render::drawEVortexCut(view, height, title).savePng(file.string());
+  } catch (const std::runtime_error& e) {
+    std::cerr << "heartsim: error: " << e.what() << '\n';
+    return kExitFailure;
+  }
+  std::cerr << "heartsim: " << scenario.name << ": the E-wave vortex of beat " << beat << " in " << file.string() << '\n';
+  return kExitOk;
+}
+
 }  // namespace
 
 std::string formatTime(double seconds) {
@@ -267,6 +331,7 @@ int renderCommand(const RenderOptions& options) {
   std::optional<cardiac::Scenario> loaded = loadScenarioOrReport(options.scenario, options.overrides, options.resolution);
   if (!loaded) return kExitBadInput;
   const cardiac::Scenario& scenario = *loaded;
+  if (options.eVortexBeat) return renderEVortex(options, scenario);
   RenderPlan plan;
   try {
     plan = planRender(options, scenario);

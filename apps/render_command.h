@@ -3,6 +3,9 @@
 // the scenario headless and draws it offscreen (EGL, no display needed) at the given times from
 // the given sides: DIR/t<time>_<view>.png for each, and DIR/contact_sheet.png with one row per
 // time and one column per view (docs/rendering.md).
+// `heartsim render normal --e-vortex 4 --out DIR`: instead, runs to the E-wave peak of beat 4 and
+// draws the filling vortex in the long-axis cut (render/vortex_cut.h) into DIR/e_vortex_beat4.png,
+// on the CPU (no GL).
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,6 +30,7 @@ struct RenderOptions {
   std::string flow = "off";            // off, streaks or arrows
   std::string labels = "off";          // off or anatomy (render/anatomy_labels.h)
   int threads = 0;                     // 0 = all cores
+  std::optional<int> eVortexBeat;      // --e-vortex: the beat whose E-wave vortex is drawn (1 = first)
 };
 
 // "0", "0.08", "1.5": seconds with up to 6 decimals and no trailing zeros (file names, labels).

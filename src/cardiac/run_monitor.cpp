@@ -108,6 +108,7 @@ RunMonitor::RunMonitor(const HeartSimulation& sim, MonitorSettings settings)
     m_ventricleBlood.emplace(sim.particles(), sim.firstBloodParticle());
     m_echo.emplace();
   }
+  if (sim.lumped() && sim.hasBlood() && settings.pump) m_fillingVortex.emplace();
   // The wall's surface hinges that are smooth at rest (bent by less than kSmoothHinge) and their
   // angles (the model's vertices are the first particles, heart_simulation.h), to find creases:
   // a crease is a fold where the surface was smooth. The modelled corners (the base's rim, the
@@ -163,6 +164,7 @@ const Verdict& RunMonitor::observe() {
   if (m_last.heartPhase != HeartPhase::None) sample.heartSound = heartSoundAt(m_last.heartPhase, sample.heartPhase);
   if (sample.lumped) sample.ecg = m_sim.ecgMillivolts();
   if (m_ventricleBlood && sample.circulation) observeBlood(sample);
+  if (m_fillingVortex && sample.lumped) watchFillingVortex(sample);
   ++m_observed;
   m_extremes.add(sample, m_sim.hasHeart() && m_settings.pump);
   if (m_sim.hasHeart() && m_settings.beatList) m_beats.record(sample.startTime, sample.phase, sample.cavity, sample.flows);
@@ -223,6 +225,25 @@ void RunMonitor::recordCirculation(const StepSample& sample) {
   m_circulation->record(step);
 }
 
+// Early filling: the heart's phase is filling and the atrium has not begun its kick (the E
+// wave, heart_phase.h). The field is read only on a step whose lumped mitral flow is the beat's
+// largest yet (filling_vortex.h): the cut's grid half a blood spacing fine, the Shepard average
+// over the blood's own support radius, a node filled where the blood covers 30% of its support
+// (a node on the wall has about half).
+void RunMonitor::watchFillingVortex(const StepSample& sample) {
+  const bool early = sample.heartPhase == HeartPhase::Filling && sample.lumped->atrialActivation <= 0;
+  if (!m_fillingVortex->step(early, sample.lumped->mitralFlow)) return;
+  const LvModel& model = m_sim.model();
+  const std::vector<Vec3>& positions = m_sim.particles().position;
+  const LongAxisCut cut = longAxisCut(model, model.flowPath.descended(Real(sample.baseDescent)), positions);
+  const BloodSettings& blood = m_sim.scenario().blood;
+  const pbd::PlaneGrid grid = longAxisGrid(cut, model, positions, 0.5 * double(blood.spacing));
+  const pbd::PlaneSampling sampling{m_sim.firstBloodParticle(), double(m_sim.circulation()->meter.particleVolume()),
+                                    double(blood.supportRadius), 0.3};
+  m_fillingVortex->keep(
+      readEVortex(cut, pbd::sampleOnPlane(grid, m_sim.particles(), sampling), sample.time, sample.lumped->mitralFlow));
+}
+
 RunSummary RunMonitor::summary() const {
   RunSummary r;
   r.steps = m_observed;
@@ -235,6 +256,7 @@ RunSummary RunMonitor::summary() const {
   r.ventricleBlood = m_ventricleBlood;
   r.echo = m_echo;
   r.smoothedSpeedMax = m_extremes.smoothedSpeedMax;
+  r.fillingVortex = m_fillingVortex;
   const RunExtremes& e = m_extremes;
   if (r.heart) {
     const LvModel& model = m_sim.model();
@@ -336,6 +358,8 @@ void RunMonitor::save(pbd::StateWriter& w) const {
     m_ventricleBlood->save(w);
     m_echo->save(w);
   }
+  w.put(m_fillingVortex.has_value());
+  if (m_fillingVortex) m_fillingVortex->save(w);
   w.fields(m_extremes, m_observed);
 }
 
@@ -359,6 +383,12 @@ void RunMonitor::load(pbd::StateReader& r) {
     m_ventricleBlood->load(r);
     m_echo->load(r);
   }
+  bool fillingVortex = false;
+  r.get(fillingVortex);
+  if (fillingVortex != m_fillingVortex.has_value())
+    throw pbd::StateError("run monitor: the filling vortex's figures are saved for a run without them or missing",
+                          r.offset());
+  if (m_fillingVortex) m_fillingVortex->load(r);
   r.fields(m_extremes, m_observed);
   // The density error is averaged over the last second before this run's end: a window that
   // begins after the checkpoint starts empty; one that began before it keeps what it holds.

@@ -15,6 +15,7 @@
 #include "cardiac/anatomy/lv_model.h"
 #include "cardiac/blood.h"
 #include "cardiac/blood/echo_velocities.h"
+#include "cardiac/blood/filling_vortex.h"
 #include "cardiac/blood/ventricle_blood.h"
 #include "cardiac/circulation.h"
 #include "cardiac/circulation/beat_metrics.h"
@@ -152,6 +153,8 @@ struct RunSummary {
   std::optional<VentricleBlood> ventricleBlood;
   // With the same: each cycle's Doppler peaks in the orifices (echo_velocities.h).
   std::optional<EchoVelocities> echo;
+  // circulation.lumped with blood: the E-wave filling vortex of each beat (filling_vortex.h).
+  std::optional<FillingVortex> fillingVortex;
   // [motion]: the recorded beat's frame volumes (m^3; empty without one), its period (s) and the
   // largest relative difference of the 3D cavity from the recorded volume over the run.
   std::vector<double> motionFrameVolumes;
@@ -199,6 +202,8 @@ class RunMonitor {
   [[nodiscard]] const VentricleBlood* ventricleBlood() const { return m_ventricleBlood ? &*m_ventricleBlood : nullptr; }
   // With the same: each cycle's Doppler peaks; null otherwise.
   [[nodiscard]] const EchoVelocities* echo() const { return m_echo ? &*m_echo : nullptr; }
+  // circulation.lumped and blood, figures gathered: the E-wave filling vortex; null otherwise.
+  [[nodiscard]] const FillingVortex* fillingVortex() const { return m_fillingVortex ? &*m_fillingVortex : nullptr; }
   // circulation.lumped with figures gathered (MonitorSettings::pump); null otherwise.
   [[nodiscard]] const CirculationRecorder* circulation() const { return m_circulation ? &*m_circulation : nullptr; }
   [[nodiscard]] const RunExtremes& extremes() const { return m_extremes; }
@@ -220,6 +225,7 @@ class RunMonitor {
   std::optional<CirculationRecorder> m_circulation;
   std::optional<VentricleBlood> m_ventricleBlood;
   std::optional<EchoVelocities> m_echo;  // kept with m_ventricleBlood
+  std::optional<FillingVortex> m_fillingVortex;
   RunExtremes m_extremes;
   std::int64_t m_observed = 0;
   std::vector<pbd::Hinge> m_hinges;     // of the wall's surface, with a heart
@@ -229,6 +235,7 @@ class RunMonitor {
   void gather(StepSample& sample) const;
   void recordCirculation(const StepSample& sample);
   void observeBlood(StepSample& sample);
+  void watchFillingVortex(const StepSample& sample);
 };
 
 }  // namespace hs::cardiac

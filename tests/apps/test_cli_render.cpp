@@ -194,3 +194,37 @@ TEST_F(CliRender, UnwritableOutputFolderIsAWriteFailure) {
 }
 
 }  // namespace
+
+namespace {
+
+// --e-vortex: the E-wave filling vortex in the long-axis cut (render/vortex_cut.h), drawn on the
+// CPU: both signs of vorticity (red and blue), the ring's figures in summary-like words.
+TEST_F(CliRender, EVortexDrawsTheLongAxisCutAtTheFirstEPeak) {
+  const auto dir = scratchDir("render_e_vortex");
+  const CliResult r = renderNoDisplay("normal --resolution coarse --threads 1 --e-vortex 1 --size 400x400 --out out", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const fs::path file = dir / "out" / "e_vortex_beat1.png";
+  ASSERT_TRUE(fs::exists(file)) << r.err;
+  const hs::viz::Image image = hs::viz::Image::loadPng(file.string());
+  EXPECT_GT(countPixels(image, [](hs::viz::Rgb c) { return c.r > 150 && c.r > c.b + 80; }), 20);
+  EXPECT_GT(countPixels(image, [](hs::viz::Rgb c) { return c.b > 150 && c.b > c.r + 80; }), 20);
+  EXPECT_NE(r.err.find("the E-wave vortex of beat 1"), std::string::npos) << r.err;
+}
+
+TEST_F(CliRender, EVortexBeatBelowOneIsRejected) {
+  expectBadInput("normal --e-vortex 0 --out D", "--e-vortex: beat 0 is not a beat");
+}
+
+TEST_F(CliRender, EVortexWithoutALumpedCirculationIsRejected) {
+  expectBadInput("heart-only --e-vortex 1 --out D", "has no lumped circulation with blood");
+}
+
+TEST_F(CliRender, EVortexBeyondTheRunIsAFailureThatSaysSo) {
+  const auto dir = scratchDir("render_e_vortex_short");
+  const CliResult r = renderNoDisplay(
+      "normal --resolution coarse --threads 1 --e-vortex 3 --set simulation.duration=0.1 --out out", dir);
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_NE(r.err.find("before beat 3's early filling ended"), std::string::npos) << r.err;
+}
+
+}  // namespace

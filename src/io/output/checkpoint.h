@@ -33,8 +33,9 @@ struct CheckpointError : std::runtime_error {
 };
 
 // 3: the blood's push on the wall in the run monitor; 4: the heart's phase; 5: the ventricle's
-// blood (flow components, kinetic energy)
-inline constexpr std::uint32_t kCheckpointVersion = 6;
+// blood (flow components, kinetic energy); 6: the Doppler velocities in the orifices; 7: the
+// E-wave filling vortex
+inline constexpr std::uint32_t kCheckpointVersion = 7;
 
 struct Checkpoint {
   std::string scenarioToml;

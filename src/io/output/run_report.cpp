@@ -141,6 +141,40 @@ void addEchoReport(nlohmann::ordered_json& heart, const cardiac::EchoVelocities&
   heart["mitral_e_m_s"] = mean(e, counted);
   heart["mitral_a_m_s"] = mean(a, withA);
   heart["echo_beats"] = beats;
+// The E-wave filling vortex (cardiac/blood/filling_vortex.h): each beat's reading at its E peak,
+// and the means over the complete beats after the first two in which a ring was found (null
+// before). The position is a share of the long axis from the mitral plane (Elbaz et al. 2014:
+// 0.19 +/- 0.04 in healthy subjects).
+void addFillingVortexReport(nlohmann::ordered_json& heart, const cardiac::FillingVortex& vortex) {
+  constexpr int kSkipped = 2;
+  nlohmann::ordered_json beats = nlohmann::json::array();
+  double position = 0, circulation = 0;
+  std::size_t counted = 0;
+  for (const cardiac::EVortexBeat& b : vortex.beats()) {
+    const cardiac::EVortexSample& s = b.sample;
+    auto figure = [&s](double value) { return s.found ? nlohmann::ordered_json(value) : nlohmann::ordered_json(); };
+    beats.push_back({{"beat", b.beat},
+                     {"complete", b.complete},
+                     {"e_peak_s", s.time},
+                     {"mitral_flow_ml_s", s.mitralFlow * kClinical.volume},
+                     {"found", s.found},
+                     {"position", figure(s.position)},
+                     {"depth_mm", figure(s.depth * 1e3)},
+                     {"long_axis_mm", s.longAxis * 1e3},
+                     {"circulation_m2_s", figure(s.circulation)},
+                     {"cores", {{"clockwise_depth_mm", s.coreDepth[0] * 1e3},
+                                {"clockwise_circulation_m2_s", s.coreCirculation[0]},
+                                {"anticlockwise_depth_mm", s.coreDepth[1] * 1e3},
+                                {"anticlockwise_circulation_m2_s", s.coreCirculation[1]}}}});
+    if (b.beat <= kSkipped || !b.complete || !s.found) continue;
+    position += s.position;
+    circulation += s.circulation;
+    ++counted;
+  }
+  const bool measured = counted > 0;
+  heart["e_vortex_position"] = measured ? nlohmann::ordered_json(position / double(counted)) : nullptr;
+  heart["e_vortex_circulation_m2_s"] = measured ? nlohmann::ordered_json(circulation / double(counted)) : nullptr;
+  heart["e_vortex_beats"] = beats;
 }
 
 // The wall's part: mesh, volume errors, cavity and beats.
@@ -200,6 +234,7 @@ void addHeartReport(nlohmann::ordered_json& report, const cardiac::RunSummary& r
   if (run.circulation) addCirculationReport(report["heart"], *run.circulation);
   if (run.ventricleBlood) addVentricleBloodReport(report["heart"], *run.ventricleBlood, run.beats);
   if (run.echo) addEchoReport(report["heart"], *run.echo);
+  if (run.fillingVortex) addFillingVortexReport(report["heart"], *run.fillingVortex);
   report["motion"] = motionReport(run);
 }
 

@@ -137,3 +137,40 @@ TEST(RunReport, FiguresNotMeasuredAreNullNotZero) {
 
 }  // namespace
 }  // namespace hs::io
+
+namespace hs::io {
+namespace {
+
+// The E-wave vortex: every beat listed; the means over the complete beats after the first two
+// in which a ring was found (beat 3 at 0.2 and beat 5 at 0.3; beat 4 found none).
+TEST(RunReport, EVortexMeansTheFoundCompleteBeatsAfterTheSecond) {
+  cardiac::FillingVortex vortex;
+  const double positions[] = {0.9, 0.8, 0.2, -1, 0.3};
+  vortex.step(false, 0);
+  for (const double p : positions) {
+    vortex.step(true, 1.0);
+    cardiac::EVortexView view;
+    view.sample.found = p >= 0;
+    view.sample.position = p;
+    view.sample.circulation = p >= 0 ? 10 * p : 0;
+    vortex.keep(view);
+    vortex.step(false, 0);
+  }
+  cardiac::RunSummary run = heartRun();
+  run.fillingVortex = vortex;
+  const nlohmann::ordered_json heart = runReport(scenario(), RunTiming{}, run, "d")["heart"];
+  EXPECT_NEAR(heart["e_vortex_position"].get<double>(), 0.25, 1e-12);
+  EXPECT_NEAR(heart["e_vortex_circulation_m2_s"].get<double>(), 2.5, 1e-12);
+  ASSERT_EQ(heart["e_vortex_beats"].size(), 5u);
+  EXPECT_TRUE(heart["e_vortex_beats"][3]["position"].is_null());
+  EXPECT_EQ(heart["e_vortex_beats"][4]["beat"], 5);
+  // Two beats only: nothing after the first two, null rather than 0.
+  cardiac::FillingVortex two;
+  two.step(false, 0);
+  for (int k = 0; k < 2; ++k) two.step(true, 1.0), two.keep(cardiac::EVortexView{}), two.step(false, 0);
+  run.fillingVortex = two;
+  EXPECT_TRUE(runReport(scenario(), RunTiming{}, run, "d")["heart"]["e_vortex_position"].is_null());
+}
+
+}  // namespace
+}  // namespace hs::io
