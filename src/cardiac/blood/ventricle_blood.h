@@ -53,6 +53,10 @@ class VentricleBlood {
 
   [[nodiscard]] const std::vector<BeatFlowComponents>& beats() const { return m_beats; }
   [[nodiscard]] const std::vector<CycleKineticEnergy>& cycles() const { return m_cycles; }
+  // Per blood particle, by identity (id - first): its component in the beat shown, and whether
+  // it has stayed more than three beats (FlowComponentTracker's rules), for pictures.
+  [[nodiscard]] std::vector<FlowComponent> components() const { return m_tracker.components(); }
+  [[nodiscard]] std::vector<std::uint8_t> stayedOverThreeBeats() const { return m_tracker.stayedOverThreeBeats(); }
   void save(pbd::StateWriter& w) const;
   void load(pbd::StateReader& r);
 
