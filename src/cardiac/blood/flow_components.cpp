@@ -92,9 +92,10 @@ std::vector<FlowComponent> FlowComponentTracker::components() const {
   return out;
 }
 
-std::vector<std::uint8_t> FlowComponentTracker::stayedOverThreeBeats() const {
-  std::vector<std::uint8_t> out(m_inside.size(), 0);
-  for (std::size_t k = 0; k < m_inside.size(); ++k) out[k] = m_inside[k] && beatsInside(k) > 3;
+std::vector<Stay> FlowComponentTracker::stays() const {
+  std::vector<Stay> out(m_inside.size(), Stay::Outside);
+  for (std::size_t k = 0; k < m_inside.size(); ++k)
+    if (m_inside[k]) out[k] = beatsInside(k) > 3 ? Stay::OverThreeBeats : Stay::UpToThreeBeats;
   return out;
 }
 

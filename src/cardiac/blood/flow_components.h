@@ -39,6 +39,9 @@ enum class FlowComponent : std::uint8_t { None, Direct, RetainedInflow, DelayedE
 // diastole) or earlier, by whether it has left since: the rule the shares count by.
 FlowComponent componentOf(bool enteredThisDiastole, bool left);
 
+// How long a blood particle has been in the ventricle, for pictures of where blood stagnates.
+enum class Stay : std::uint8_t { Outside, UpToThreeBeats, OverThreeBeats };
+
 class FlowComponentTracker {
  public:
   explicit FlowComponentTracker(std::size_t particles = 0);
@@ -61,10 +64,10 @@ class FlowComponentTracker {
   // the blood again; blood that was not in the ventricle at the last end-diastole is None.
   // Reads the bookkeeping only.
   [[nodiscard]] std::vector<FlowComponent> components() const;
-  // Per particle (by identity): 1 when it is in the ventricle and has been there for more than
-  // three beats (entered four or more diastoles ago, counting the one in progress, or there
+  // Per particle (by identity): outside the ventricle, or in it for up to or more than three
+  // beats (more: entered four or more diastoles ago, counting the one in progress, or there
   // since tracking began that long ago), as FlowComponents::stayedOverThreeBeats counts.
-  [[nodiscard]] std::vector<std::uint8_t> stayedOverThreeBeats() const;
+  [[nodiscard]] std::vector<Stay> stays() const;
 
   void save(pbd::StateWriter& w) const;
   void load(pbd::StateReader& r);

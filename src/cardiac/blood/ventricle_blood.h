@@ -5,6 +5,7 @@
 // come from the heart's phase (heart_phase.h): end-diastole when filling gives way to isovolumic
 // contraction (or straight to ejection), end-systole when ejection ends. Fed by the run's monitor
 // after each step with the flow meter's regions.
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -31,6 +32,11 @@ struct BeatFlowComponents {
   }
 };
 
+// The mean of the beats' components (every field, the particle count left 0) over the beats
+// after the first `skipped` (the first beats, while the blood settles into its path); none
+// when no beat is left.
+std::optional<FlowComponents> meanFlowComponents(std::span<const BeatFlowComponents> beats, std::size_t skipped);
+
 // The kinetic energy of the blood in the ventricle over one cardiac cycle, from an end-diastole
 // to the next (J): its time mean and its largest value while filling (the E and A jets).
 struct CycleKineticEnergy {
@@ -56,7 +62,7 @@ class VentricleBlood {
   // Per blood particle, by identity (id - first): its component in the beat shown, and whether
   // it has stayed more than three beats (FlowComponentTracker's rules), for pictures.
   [[nodiscard]] std::vector<FlowComponent> components() const { return m_tracker.components(); }
-  [[nodiscard]] std::vector<std::uint8_t> stayedOverThreeBeats() const { return m_tracker.stayedOverThreeBeats(); }
+  [[nodiscard]] std::vector<Stay> stays() const { return m_tracker.stays(); }
   void save(pbd::StateWriter& w) const;
   void load(pbd::StateReader& r);
 

@@ -135,12 +135,15 @@ TEST(FlowComponents, BloodStayingMoreThanThreeBeatsIsMarked) {
   for (int beat = 1; beat <= 4; ++beat) {
     tracker.observe(inside(beat == 1 ? "110" : "111"));  // 1 enters in diastole 1, 2 in diastole 2
     tracker.endDiastole();
-    const std::vector<std::uint8_t> stayed = tracker.stayedOverThreeBeats();
-    EXPECT_EQ(stayed[0], beat >= 4) << "beat " << beat;
-    EXPECT_EQ(stayed[1], beat >= 4) << "beat " << beat;
-    EXPECT_EQ(stayed[2], 0) << "beat " << beat << ": three beats at most";
+    const Stay longer = beat >= 4 ? Stay::OverThreeBeats : Stay::UpToThreeBeats;
+    const std::vector<Stay> stays = tracker.stays();
+    EXPECT_EQ(stays[0], longer) << "beat " << beat;
+    EXPECT_EQ(stays[1], longer) << "beat " << beat;
+    EXPECT_EQ(stays[2], Stay::UpToThreeBeats) << "beat " << beat << ": three beats at most";
     tracker.endSystole();
   }
+  tracker.observe(inside("011"));
+  EXPECT_EQ(tracker.stays()[0], Stay::Outside) << "ejected at last";
 }
 
 }  // namespace
