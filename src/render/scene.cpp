@@ -365,11 +365,11 @@ std::span<const OriginKeyRow> originKey() {
 std::span<const ComponentKeyRow> componentKey() {
   using cardiac::FlowComponent;
   static constexpr ComponentKeyRow kRows[] = {
-      {FlowComponent::Direct, "direct flow: in and out in one beat", "green"},
-      {FlowComponent::RetainedInflow, "retained inflow: came in, stays", "blue"},
-      {FlowComponent::DelayedEjection, "delayed ejection: was there, leaves", "yellow"},
-      {FlowComponent::Residual, "residual: was there, stays", "red"},
-      {FlowComponent::None, "not in the ventricle at end-diastole", "grey"}};
+      {FlowComponent::Direct, "direct flow: in and out in one beat", "green", "direct flow"},
+      {FlowComponent::RetainedInflow, "retained inflow: came in, stays", "blue", "retained inflow"},
+      {FlowComponent::DelayedEjection, "delayed ejection: was there, leaves", "yellow", "delayed ejection"},
+      {FlowComponent::Residual, "residual: was there, stays", "red", "residual volume"},
+      {FlowComponent::None, "not in the ventricle at end-diastole", "grey", "not in at end-diastole"}};
   return kRows;
 }
 

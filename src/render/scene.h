@@ -146,6 +146,7 @@ struct ComponentKeyRow {
   cardiac::FlowComponent component;
   const char* label;
   const char* colourName;
+  const char* shortLabel;  // the component's name alone, for the viewer's narrow key
 };
 std::span<const ComponentKeyRow> componentKey();
 struct StayKeyRow {

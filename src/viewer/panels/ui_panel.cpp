@@ -69,31 +69,36 @@ void originLegend() {
 
 // Blood coloured by flow component or by how long it stayed: one swatch per row, the rule in
 // the tooltip.
-template <class Rows, class Colour>
-void swatchLegend(const char* title, const Rows& rows, Colour colour, const char* tip) {
+template <class Rows, class Colour, class Label>
+void swatchLegend(const char* title, const Rows& rows, Colour colour, Label label, const char* tip) {
   ImGui::TextUnformatted(title);
   tooltip(tip);
   for (const auto& row : rows) {
     const render::Vec3f c = colour(row);
     ImGui::TextColored(ImVec4(c.x(), c.y(), c.z(), 1), "o");
     ImGui::SameLine();
-    ImGui::TextUnformatted(row.label);
+    ImGui::TextUnformatted(label(row));
     tooltip(tip);
   }
 }
 
 void componentLegend() {
-  static const std::string tip =
-      std::string("The flow components of 4D-flow MRI (Bolger 2007, Eriksson 2010), of the blood in the "
-                  "ventricle at end-diastole. The colours: ") +
-      render::kComponentRule + ". The shares are in the pump panel.";
-  swatchLegend("Blood by flow component", render::componentKey(),
-               [](const render::ComponentKeyRow& r) { return render::componentColour(r.component); }, tip.c_str());
+  static const std::string tip = [] {
+    std::string t = "The flow components of 4D-flow MRI (Bolger 2007, Eriksson 2010), of the blood in the "
+                    "ventricle at end-diastole:";
+    for (const render::ComponentKeyRow& row : render::componentKey()) t += std::string("\n  ") + row.label;
+    return t + ".\nThe colours: " + render::kComponentRule + ". The shares are in the pump panel.";
+  }();
+  swatchLegend(
+      "Blood by flow component", render::componentKey(),
+      [](const render::ComponentKeyRow& r) { return render::componentColour(r.component); },
+      [](const render::ComponentKeyRow& r) { return r.shortLabel; }, tip.c_str());
 }
 
 void stayLegend() {
   swatchLegend("Blood by how long it stayed", render::stayKey(),
                [](const render::StayKeyRow& r) { return render::stayColour(r.stay); },
+               [](const render::StayKeyRow& r) { return r.label; },
                "How many beats each particle has been in the ventricle, counted from the diastole it entered "
                "in: blood that stays long is slow blood, where a clot can form (an akinetic apex).");
 }
