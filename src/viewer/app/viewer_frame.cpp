@@ -141,9 +141,14 @@ void ViewerApp::drawFrame(const std::string& captureTo) {
   options.clipZ = m_controls.clipZ;
   options.wallOpacity = m_controls.wallOpacity;
   options.beating = m_region.highlight(m_controls.region);
-  // While a region is chosen or painted, the blood lets it show through.
-  if (m_controls.region.paintMode || m_controls.region.showRegion) options.bloodOpacity = 0.3f;
   options.bloodColour = render::BloodColour(std::clamp(m_controls.bloodColour, 0, 4));
+  // While a region is chosen or painted, the blood lets it show through; but where the blood's
+  // colours are the picture (its flow components, how long it stayed) a chosen region gives
+  // way to them, so that anterior-infarct's stagnant blood shows at its apex.
+  const bool bloodIsThePicture = options.bloodColour == render::BloodColour::Components ||
+                                 options.bloodColour == render::BloodColour::Stay;
+  if (m_controls.region.paintMode || (m_controls.region.showRegion && !bloodIsThePicture))
+    options.bloodOpacity = 0.3f;
   options.bloodLook = render::BloodLook(std::clamp(m_controls.bloodLook, 0, 1));
   options.flow = render::FlowView(std::clamp(m_controls.flowView, 0, 2));
   options.pathlines = &m_pathlines;
