@@ -3,6 +3,8 @@
 #include <omp.h>
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -23,7 +25,45 @@ namespace fs = std::filesystem;
 struct ComparedRun {
   io::PvLoopCurve loop;
   cardiac::PressureVolumeRelations relations;
+  // The 3D blood's flow components as summary.json's heart.flow_components (the mean of the
+  // beats after the first two), or of every beat when a short run has no more; none without
+  // blood and valves or a beat.
+  std::optional<cardiac::FlowComponents> flow;
+  std::string flowBeats;  // which beats: "beats 3-6", "beat 1"
 };
+
+constexpr std::size_t kSettlingBeats = 2;  // as summary.json skips (io/output/run_report.cpp)
+
+std::string beatRange(std::size_t first, std::size_t last) {
+  return first == last ? "beat " + std::to_string(first)
+                       : "beats " + std::to_string(first) + "-" + std::to_string(last);
+}
+
+// Both runs' four shares side by side, in % of the end-diastolic volume.
+void printFlowComponents(const std::vector<ComparedRun>& runs) {
+  std::printf("flow components, %% of the end-diastolic volume (3D blood):\n");
+  std::printf("  %-18s %24s %24s\n", "", runs[0].loop.label.c_str(), runs[1].loop.label.c_str());
+  std::printf("  %-18s %24s %24s\n", "", runs[0].flowBeats.c_str(), runs[1].flowBeats.c_str());
+  struct Row {
+    const char* name;
+    double cardiac::FlowComponents::*share;
+  };
+  for (const Row& row : {Row{"direct flow", &cardiac::FlowComponents::direct},
+                         Row{"retained inflow", &cardiac::FlowComponents::retainedInflow},
+                         Row{"delayed ejection", &cardiac::FlowComponents::delayedEjection},
+                         Row{"residual volume", &cardiac::FlowComponents::residual},
+                         Row{"stayed > 3 beats", &cardiac::FlowComponents::stayedOverThreeBeats}}) {
+    std::printf("  %-18s", row.name);
+    for (const ComparedRun& run : runs) {
+      if (run.flow)
+        std::printf(" %24.1f", 100 * (*run.flow).*row.share);
+      else
+        std::printf(" %24s", "-");
+    }
+    std::printf("\n");
+  }
+  std::printf("  (healthy, 4D-flow MRI, Stoll et al. 2018: direct 38, retained 16, delayed 16, residual 30)\n");
+}
 
 // One scenario to `duration`, health-checked each step; its last complete beat. Exit code in
 // `exitCode` (and nullopt) when it cannot be compared.
@@ -63,6 +103,13 @@ std::optional<ComparedRun> runOne(const std::string& source, double duration, in
     return std::nullopt;
   }
   run.relations = sim->lumped()->relations(sim->drivenWall()->beatingShare());
+  if (const cardiac::VentricleBlood* blood = monitor.ventricleBlood(); blood && !blood->beats().empty()) {
+    const std::size_t n = blood->beats().size(), skipped = n > kSettlingBeats ? kSettlingBeats : 0;
+    run.flow = cardiac::meanFlowComponents(blood->beats(), skipped);
+    run.flowBeats = beatRange(skipped + 1, n);
+  } else {
+    run.flowBeats = "no beat";
+  }
   exitCode = kExitOk;
   return run;
 }
@@ -86,6 +133,7 @@ int compareCommand(const CompareOptions& options) {
     if (!run) return exitCode;
     runs.push_back(std::move(*run));
   }
+  printFlowComponents(runs);
   const fs::path outDir = options.outDir.empty()
                               ? io::defaultOutputFolder("compare_" + runs[0].loop.label + "_" + runs[1].loop.label)
                               : fs::path(options.outDir);

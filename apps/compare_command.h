@@ -1,7 +1,8 @@
 #pragma once
 // `heartsim compare A B`: two scenarios with the lumped circulation run one after the other,
 // and their last complete beats drawn as two loops on one pressure-volume plot
-// (pv_compare.png), e.g. `heartsim compare normal dilated-cardiomyopathy`.
+// (pv_compare.png), e.g. `heartsim compare normal dilated-cardiomyopathy`; with 3D blood, both
+// runs' flow components (summary.json's heart.flow_components) printed side by side.
 #include <string>
 #include <vector>
 

@@ -75,7 +75,7 @@ void addRunCommand(CLI::App& app, Commands& c) {
 void addCompareCommand(CLI::App& app, Commands& c) {
   hs::app::CompareOptions& compare = c.compare;
   CLI::App* compareApp = c.compareApp = app.add_subcommand(
-      "compare", "Run two lumped-circulation scenarios and draw their pressure-volume loops on one plot");
+      "compare", "Run two lumped-circulation scenarios, draw their pressure-volume loops on one plot and print their blood's flow components side by side");
   compareApp->add_option("scenarios", compare.scenarios, "Two built-in scenario names or .toml paths")
       ->required()
       ->expected(2);
@@ -98,7 +98,7 @@ void addRenderCommand(CLI::App& app, Commands& c) {
   renderApp->add_option("--wall-opacity", render.wallOpacity, "Wall opacity in (0, 1]; below 1 the wall is see-through")
       ->capture_default_str();
   renderApp->add_option("--speed-max", render.speedMax, "Blood speed (m/s) at the top of the colour scale (0: from the scenario)");
-  renderApp->add_option("--blood-colour", render.bloodColour, "Colour the blood by speed, pressure or origin")
+  renderApp->add_option("--blood-colour", render.bloodColour, "Colour the blood by speed, pressure, origin, components (its flow component in the beat: green direct, blue retained inflow, yellow delayed ejection, red residual) or stay (more than 3 beats in the ventricle)")
       ->capture_default_str();
   renderApp->add_option("--blood-look", render.bloodLook, "Draw the blood as a liquid surface or as spheres")
       ->capture_default_str();

@@ -135,7 +135,8 @@ RenderPlan planRender(const RenderOptions& options, const cardiac::Scenario& sce
   if (!(options.pressureMax >= 0) || !std::isfinite(options.pressureMax))
     throw BadInput{"--pressure-max: must be a finite pressure >= 0 (mmHg; 0 = from the scenario)"};
   if (!render::parseBloodColour(options.bloodColour))
-    throw BadInput{"--blood-colour: unknown colour '" + options.bloodColour + "'; valid: speed, pressure, origin"};
+    throw BadInput{"--blood-colour: unknown colour '" + options.bloodColour +
+                   "'; valid: speed, pressure, origin, components, stay"};
   if (!render::parseBloodLook(options.bloodLook))
     throw BadInput{"--blood-look: unknown look '" + options.bloodLook + "'; valid: liquid, spheres"};
   if (!render::parseFlowView(options.flow))
@@ -187,6 +188,18 @@ std::string sheetFooter(const cardiac::HeartSimulation& sim, const render::Scene
         footer += std::string(" ") + row.colourName + " " + row.label + ",";
       footer.pop_back();
       break;
+    case render::BloodColour::Components:
+      footer += "blood coloured by its flow component in the beat whose systole ends next:";
+      for (const render::ComponentKeyRow& row : render::componentKey())
+        footer += std::string(" ") + row.colourName + " " + row.label + ",";
+      footer.pop_back();
+      break;
+    case render::BloodColour::Stay:
+      footer += "blood coloured by how long it has been in the ventricle:";
+      for (const render::StayKeyRow& row : render::stayKey())
+        footer += std::string(" ") + row.colourName + " " + row.label + ",";
+      footer.pop_back();
+      break;
   }
   return footer;
 }
@@ -198,6 +211,20 @@ struct Offscreen {
   render::Renderer renderer;
   Offscreen(int width, int height) : target(width, height) {}
 };
+
+// One time's scene, waiting for its blood's colours when they are known only later.
+struct Shot {
+  double time = 0;
+  render::Scene scene;
+  std::vector<render::SceneLabel> labels;
+  std::vector<std::size_t> identities;  // of the scene's blood (render::drawnBloodIdentities)
+};
+
+// Colouring by component looks ahead: the blood at a time is coloured by the component it ends
+// up in when the beat's systole is over (the first end-systole after that time), as the 4D-flow
+// papers colour the end-diastolic volume by its fate. The run steps on past the last time for
+// that, by at most this long.
+constexpr double kComponentLookAhead = 3.0;  // s: two beats at 40 bpm
 
 // Draws each time's views into PNGs and their thumbnails into `cells` (a row per time),
 // stepping the simulation to each time under the monitor's health checks.
@@ -213,41 +240,91 @@ int drawTimes(cardiac::HeartSimulation& sim, Offscreen& out, const RenderPlan& p
   const float aspect = float(plan.width) / float(plan.height);
   const int shrinkFactor = std::max(1, (plan.width + 399) / 400);
   const int textScale = std::max(1, std::min(plan.width, plan.height) / 300);
-  cardiac::RunMonitor monitor(sim, cardiac::MonitorSettings::healthOnly());
+  const bool byComponent = sceneOptions.bloodColour == render::BloodColour::Components;
+  const bool byStay = sceneOptions.bloodColour == render::BloodColour::Stay;
+  const bool lookAhead = byComponent && sceneOptions.flow == render::FlowView::Off;
+  // The blood's own bookkeeping (flow components) only where the colours need it: it reads the
+  // state and changes nothing.
+  cardiac::MonitorSettings settings = cardiac::MonitorSettings::healthOnly();
+  settings.pump = byComponent || byStay;
+  settings.lumpedSamples = 1000;  // the lumped recorder keeps a bounded window; nothing here reads it
+  cardiac::RunMonitor monitor(sim, settings);
+  const cardiac::VentricleBlood* blood = monitor.ventricleBlood();
+  std::vector<cardiac::FlowComponent> components;
+  std::vector<cardiac::Stay> stays;
   ProgressBar progress(static_cast<long>(std::llround(plan.times.back() / dt)));
+
+  auto drawShot = [&](Shot& shot) {
+    const std::string label = "t = " + formatTime(shot.time) + " s";
+    rowLabels.push_back(label);
+    cells.emplace_back();
+    for (const render::View view : plan.views) {
+      render::applyView(shot.scene, sceneOptions, view);
+      out.target.bind();
+      out.renderer.draw(shot.scene, render::viewCamera(view, shot.scene.bounds, aspect), plan.width, plan.height);
+      viz::Image image = out.target.read();
+      std::vector<viz::Rect> key;
+      if (sim.hasBlood()) key.push_back(render::drawBloodLegend(image, sceneOptions.bloodColour, scaleMax));
+      render::drawLabels(image, shot.labels, render::viewCamera(view, shot.scene.bounds, aspect), key);
+      image.drawText(6 * textScale, 6 * textScale, std::string(render::viewName(view)) + ", " + label, textScale,
+                     {40, 40, 50});
+      image.savePng((plan.outDir / ("t" + formatTime(shot.time) + "_" + render::viewName(view) + ".png")).string());
+      cells.back().push_back(shrink(image, shrinkFactor));
+    }
+  };
+  std::vector<Shot> waiting;  // in time order
+  auto drawWaiting = [&] {
+    components = blood->components();
+    for (Shot& shot : waiting) {
+      render::colourByComponent(shot.scene, shot.identities, components);
+      drawShot(shot);
+    }
+    waiting.clear();
+  };
+  std::size_t beatsEnded = blood ? blood->beats().size() : 0;
+  // One step under the health checks; a finished beat colours the shots waiting for it.
+  auto step = [&]() -> bool {
+    sim.step();
+    if (const cardiac::Verdict& verdict = monitor.observe(); !verdict.healthy()) {
+      progress.finish();
+      std::cerr << "heartsim: error: " << verdict.message() << '\n';
+      return false;
+    }
+    progress.update(static_cast<long>(sim.stepCount()), sim.time());
+    if (blood && blood->beats().size() > beatsEnded) {
+      beatsEnded = blood->beats().size();
+      if (!waiting.empty()) drawWaiting();
+    }
+    return true;
+  };
   for (const double t : plan.times) {
     const auto target = static_cast<std::int64_t>(std::llround(t / dt));
     pathlines.clear();
     while (sim.stepCount() < target) {
       if (sceneOptions.flow == render::FlowView::Streaks && sim.stepCount() >= target - windowSteps)
         pathlines.record(sim);
-      sim.step();
-      if (const cardiac::Verdict& verdict = monitor.observe(); !verdict.healthy()) {
-        progress.finish();
-        std::cerr << "heartsim: error: " << verdict.message() << '\n';
-        return kExitInvalidSimulation;
-      }
-      progress.update(static_cast<long>(sim.stepCount()), sim.time());
+      if (!step()) return kExitInvalidSimulation;
     }
     if (sceneOptions.flow == render::FlowView::Streaks) pathlines.record(sim);
-    render::Scene scene = render::buildScene(sim, sceneOptions);
-    const std::vector<render::SceneLabel> labels = render::anatomyLabels(sim, labelSet);
-    const std::string label = "t = " + formatTime(t) + " s";
-    rowLabels.push_back(label);
-    cells.emplace_back();
-    for (const render::View view : plan.views) {
-      render::applyView(scene, sceneOptions, view);
-      out.target.bind();
-      out.renderer.draw(scene, render::viewCamera(view, scene.bounds, aspect), plan.width, plan.height);
-      viz::Image image = out.target.read();
-      std::vector<viz::Rect> key;
-      if (sim.hasBlood()) key.push_back(render::drawBloodLegend(image, sceneOptions.bloodColour, scaleMax));
-      render::drawLabels(image, labels, render::viewCamera(view, scene.bounds, aspect), key);
-      image.drawText(6 * textScale, 6 * textScale, std::string(render::viewName(view)) + ", " + label, textScale,
-                     {40, 40, 50});
-      image.savePng((plan.outDir / ("t" + formatTime(t) + "_" + render::viewName(view) + ".png")).string());
-      cells.back().push_back(shrink(image, shrinkFactor));
+    if (blood && byComponent) components = blood->components();
+    if (blood && byStay) stays = blood->stays();
+    sceneOptions.components = blood ? &components : nullptr;
+    sceneOptions.stays = blood ? &stays : nullptr;
+    Shot shot{t, render::buildScene(sim, sceneOptions), render::anatomyLabels(sim, labelSet), {}};
+    if (lookAhead) {
+      shot.identities = render::drawnBloodIdentities(sim);
+      waiting.push_back(std::move(shot));
+    } else {
+      drawShot(shot);
     }
+  }
+  const auto lastStep = sim.stepCount() + static_cast<std::int64_t>(std::llround(kComponentLookAhead / dt));
+  while (!waiting.empty() && sim.stepCount() < lastStep)
+    if (!step()) return kExitInvalidSimulation;
+  if (!waiting.empty()) {
+    std::cerr << "heartsim: warning: no end of systole within " << formatTime(kComponentLookAhead)
+              << " s after the last time: its blood is coloured by the components so far\n";
+    drawWaiting();
   }
   progress.finish();
   return kExitOk;
@@ -346,6 +423,13 @@ int renderCommand(const RenderOptions& options) {
   int setupError = kExitOk;
   const std::unique_ptr<cardiac::HeartSimulation> sim = makeSimulation(scenario, threads, options.scenario, setupError);
   if (!sim) return setupError;
+  if (const render::BloodColour colour = *render::parseBloodColour(options.bloodColour);
+      (colour == render::BloodColour::Components || colour == render::BloodColour::Stay) &&
+      !(sim->hasHeart() && sim->hasBlood() && sim->circulation())) {
+    std::cerr << "heartsim: error: --blood-colour " << options.bloodColour << ": '" << scenario.name
+              << "' has no heart with blood and valves, so no beat sorts its blood\n";
+    return kExitBadInput;
+  }
   std::optional<Offscreen> out;
   try {
     out.emplace(plan.width, plan.height);

@@ -24,7 +24,7 @@ struct RenderOptions {
   double clipZ = 0;                    // m
   double wallOpacity = 1;              // (0, 1]; < 1 draws a see-through wall
   double speedMax = 0;                 // m/s, top of the blood colour scale; 0: from the scenario
-  std::string bloodColour = "speed";   // speed, pressure or origin
+  std::string bloodColour = "speed";   // speed, pressure, origin, components or stay
   double pressureMax = 0;              // mmHg, top of the pressure colour scale; 0: from the scenario
   std::string bloodLook = "liquid";    // liquid or spheres
   std::string flow = "off";            // off, streaks or arrows

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "cardiac/circulation/clinical_units.h"
 #include "render/blood_field.h"
@@ -165,6 +167,26 @@ Vec3f originColour(cardiac::FlowRegion origin) {
   }
 }
 
+Vec3f componentColour(cardiac::FlowComponent component) {
+  switch (component) {
+    case cardiac::FlowComponent::Direct: return Vec3f(0.1f, 0.72f, 0.2f);
+    case cardiac::FlowComponent::RetainedInflow: return Vec3f(0.15f, 0.35f, 0.95f);
+    case cardiac::FlowComponent::DelayedEjection: return Vec3f(0.98f, 0.85f, 0.1f);
+    case cardiac::FlowComponent::Residual: return Vec3f(0.85f, 0.08f, 0.08f);
+    case cardiac::FlowComponent::None: break;
+  }
+  return Vec3f(0.78f, 0.78f, 0.8f);
+}
+
+Vec3f stayColour(cardiac::Stay stay) {
+  switch (stay) {
+    case cardiac::Stay::OverThreeBeats: return Vec3f(0.7f, 0.05f, 0.1f);
+    case cardiac::Stay::UpToThreeBeats: return Vec3f(0.55f, 0.75f, 0.98f);
+    case cardiac::Stay::Outside: break;
+  }
+  return Vec3f(0.78f, 0.78f, 0.8f);
+}
+
 double defaultSpeedScale(const cardiac::Scenario& scenario) {
   const double g = std::max(double(scenario.simulation.gravity.norm()), 1e-6);
   return roundUpNicely(std::sqrt(2 * g * fallHeight(scenario)));
@@ -174,7 +196,9 @@ double colourScaleMax(const SceneOptions& options, const cardiac::Scenario& scen
   switch (options.bloodColour) {
     case BloodColour::Speed: return options.speedMax > 0 ? options.speedMax : defaultSpeedScale(scenario);
     case BloodColour::Pressure: return options.pressureMax > 0 ? options.pressureMax : defaultPressureScale(scenario);
-    case BloodColour::Origin: return 0;
+    case BloodColour::Origin:
+    case BloodColour::Components:
+    case BloodColour::Stay: return 0;
   }
   return 0;
 }
@@ -226,6 +250,10 @@ Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& option
     // Speed and pressure from the SPH-smoothed field (blood_field.h), not per particle.
     const BloodField field = smoothedBlood(sim);
     scene.particles.centres = field.position;
+    const std::size_t blood = sim.particles().size() - sim.firstBloodParticle();
+    const bool tagged = options.components && options.components->size() == blood;
+    const bool stayed = options.stays && options.stays->size() == blood;
+    auto identity = [&](pbd::Index i) { return std::size_t(sim.particles().id[i] - sim.firstBloodParticle()); };
     for (std::size_t k = 0; k < field.particle.size(); ++k) {
       switch (options.bloodColour) {
         case BloodColour::Speed:
@@ -236,6 +264,14 @@ Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& option
           break;
         case BloodColour::Origin:
           scene.particles.colours.push_back(originColour(sim.bloodOrigin(field.particle[k])));
+          break;
+        case BloodColour::Components:
+          scene.particles.colours.push_back(componentColour(
+              tagged ? (*options.components)[identity(field.particle[k])] : cardiac::FlowComponent::None));
+          break;
+        case BloodColour::Stay:
+          scene.particles.colours.push_back(
+              stayColour(stayed ? (*options.stays)[identity(field.particle[k])] : cardiac::Stay::Outside));
           break;
       }
     }
@@ -253,6 +289,24 @@ Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& option
   return scene;
 }
 
+std::vector<std::size_t> drawnBloodIdentities(const cardiac::HeartSimulation& sim) {
+  std::vector<std::size_t> identities;
+  if (!sim.hasBlood()) return identities;
+  // smoothedBlood's order: the active blood particles in storage order.
+  for (std::size_t i = sim.firstBloodParticle(); i < sim.particles().size(); ++i)
+    if (sim.bloodActive(pbd::Index(i))) identities.push_back(std::size_t(sim.particles().id[i] - sim.firstBloodParticle()));
+  return identities;
+}
+
+void colourByComponent(Scene& scene, std::span<const std::size_t> identities,
+                       std::span<const cardiac::FlowComponent> components) {
+  assert(identities.size() == scene.particles.centres.size());
+  scene.particles.colours.resize(identities.size());
+  for (std::size_t k = 0; k < identities.size(); ++k)
+    scene.particles.colours[k] = componentColour(
+        identities[k] < components.size() ? components[identities[k]] : cardiac::FlowComponent::None);
+}
+
 void applyView(Scene& scene, const SceneOptions& options, View view) {
   const float opacity = std::clamp(options.wallOpacity, 0.05f, 1.0f);
   const bool facing = std::abs(viewDirection(view).dot(scene.clip.normal)) >= 0.5f;
@@ -265,12 +319,15 @@ const char* bloodColourName(BloodColour colour) {
     case BloodColour::Speed: return "speed";
     case BloodColour::Pressure: return "pressure";
     case BloodColour::Origin: return "origin";
+    case BloodColour::Components: return "components";
+    case BloodColour::Stay: return "stay";
   }
   return "";
 }
 
 std::optional<BloodColour> parseBloodColour(std::string_view name) {
-  for (const BloodColour c : {BloodColour::Speed, BloodColour::Pressure, BloodColour::Origin})
+  for (const BloodColour c : {BloodColour::Speed, BloodColour::Pressure, BloodColour::Origin, BloodColour::Components,
+                              BloodColour::Stay})
     if (name == bloodColourName(c)) return c;
   return std::nullopt;
 }
@@ -305,6 +362,24 @@ std::span<const OriginKeyRow> originKey() {
   return kRows;
 }
 
+std::span<const ComponentKeyRow> componentKey() {
+  using cardiac::FlowComponent;
+  static constexpr ComponentKeyRow kRows[] = {
+      {FlowComponent::Direct, "direct flow: in and out in one beat", "green", "direct flow"},
+      {FlowComponent::RetainedInflow, "retained inflow: came in, stays", "blue", "retained inflow"},
+      {FlowComponent::DelayedEjection, "delayed ejection: was there, leaves", "yellow", "delayed ejection"},
+      {FlowComponent::Residual, "residual: was there, stays", "red", "residual volume"},
+      {FlowComponent::None, "not in the ventricle at end-diastole", "grey", "not in at end-diastole"}};
+  return kRows;
+}
+
+std::span<const StayKeyRow> stayKey() {
+  static constexpr StayKeyRow kRows[] = {{cardiac::Stay::OverThreeBeats, "in the ventricle over 3 beats", "dark red"},
+                                         {cardiac::Stay::UpToThreeBeats, "in the ventricle up to 3 beats", "pale blue"},
+                                         {cardiac::Stay::Outside, "outside the ventricle", "grey"}};
+  return kRows;
+}
+
 namespace {
 
 // A key's frame in the image's lower right corner, text scaled with the image: a pale box of
@@ -333,18 +408,24 @@ std::array<int, 2> drawKeyBox(viz::Image& image, const KeyLayout& k, const std::
   return {x0 + k.margin, y0 + k.margin + k.line};
 }
 
-// One swatch and label per origin, one line each.
-void drawOriginKey(viz::Image& image, const KeyLayout& k, viz::Rect& box) {
+// One swatch and label per row, one line each: (colour, label) pairs under a title.
+void drawSwatchKey(viz::Image& image, const KeyLayout& k, const std::string& title,
+                   const std::vector<std::pair<Vec3f, const char*>>& rows, viz::Rect& box) {
   const int swatch = viz::Image::capHeight(k.scale) + 2 * k.scale, gap = 4 * k.scale;
   int width = 0;
-  for (const OriginKeyRow& row : originKey())
-    width = std::max(width, swatch + gap + viz::Image::textWidth(row.label, k.scale));
-  auto [x, y] = drawKeyBox(image, k, "blood by where it started", width, int(originKey().size()) * k.line, box);
-  for (const OriginKeyRow& row : originKey()) {
-    image.fillRect({x, y + k.capHalf - swatch / 2, swatch, swatch}, toRgb(originColour(row.origin)));
-    image.drawText(x + swatch + gap, y, row.label, k.scale, kInk);
+  for (const auto& [colour, label] : rows) width = std::max(width, swatch + gap + viz::Image::textWidth(label, k.scale));
+  auto [x, y] = drawKeyBox(image, k, title, width, int(rows.size()) * k.line, box);
+  for (const auto& [colour, label] : rows) {
+    image.fillRect({x, y + k.capHalf - swatch / 2, swatch, swatch}, toRgb(colour));
+    image.drawText(x + swatch + gap, y, label, k.scale, kInk);
     y += k.line;
   }
+}
+
+void drawOriginKey(viz::Image& image, const KeyLayout& k, viz::Rect& box) {
+  std::vector<std::pair<Vec3f, const char*>> rows;
+  for (const OriginKeyRow& row : originKey()) rows.emplace_back(originColour(row.origin), row.label);
+  drawSwatchKey(image, k, "blood by where it started", rows, box);
 }
 
 // The colour bar from 0 (bottom) to scaleMax (top), labelled at both ends and the middle.
@@ -374,6 +455,18 @@ viz::Rect drawBloodLegend(viz::Image& image, BloodColour colour, double scaleMax
     case BloodColour::Speed: drawScaleBar(image, k, "blood speed (m/s)", scaleMax, box); break;
     case BloodColour::Pressure: drawScaleBar(image, k, "blood pressure (mmHg)", scaleMax, box); break;
     case BloodColour::Origin: drawOriginKey(image, k, box); break;
+    case BloodColour::Components: {
+      std::vector<std::pair<Vec3f, const char*>> rows;
+      for (const ComponentKeyRow& row : componentKey()) rows.emplace_back(componentColour(row.component), row.label);
+      drawSwatchKey(image, k, "blood by flow component", rows, box);
+      break;
+    }
+    case BloodColour::Stay: {
+      std::vector<std::pair<Vec3f, const char*>> rows;
+      for (const StayKeyRow& row : stayKey()) rows.emplace_back(stayColour(row.stay), row.label);
+      drawSwatchKey(image, k, "blood by how long it stayed", rows, box);
+      break;
+    }
   }
   return box;
 }

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cardiac/blood/flow_components.h"
 #include "cardiac/heart_simulation.h"
 #include "render/pathlines.h"
 #include "render/renderer.h"
@@ -15,8 +16,9 @@
 
 namespace hs::render {
 
-// What the blood's colour shows.
-enum class BloodColour { Speed, Pressure, Origin };
+// What the blood's colour shows: speed, pressure, where it started, its flow component in the
+// beat (4D-flow MRI's, cardiac/blood/flow_components.h), or how long it has stayed.
+enum class BloodColour { Speed, Pressure, Origin, Components, Stay };
 
 // The flow view: none, short pathline streaks (pathlines.h), or arrows of the smoothed
 // velocity. With either, the lines carry the speed colours and the blood is drawn pale and
@@ -46,6 +48,10 @@ struct SceneOptions {
   std::optional<std::vector<std::uint8_t>> beating;
   // The segments the inconsistent pattern beats out of step drawn in outOfStepColour.
   bool markOutOfStep = true;
+  // Components and Stay: per blood particle by identity (id - firstBloodParticle), from the
+  // run's VentricleBlood; none (or a size that does not match) draws every particle neutral.
+  const std::vector<cardiac::FlowComponent>* components = nullptr;
+  const std::vector<cardiac::Stay>* stays = nullptr;
   // < 1: the blood drawn see-through over the wall (the viewer while a region is chosen, so
   // the region on the far wall shows through the blood in front of it).
   float bloodOpacity = 1;
@@ -81,6 +87,14 @@ double defaultPressureScale(const cardiac::Scenario& scenario);
 // or outside the model, entering through the loop (green).
 Vec3f originColour(cardiac::FlowRegion origin);
 
+// The 4D-flow papers' colours (Bolger et al. 2007; Eriksson et al. 2010): direct flow green,
+// retained inflow blue, delayed ejection yellow, residual volume red; blood that was not in the
+// ventricle at end-diastole light grey.
+Vec3f componentColour(cardiac::FlowComponent component);
+// Blood that has stayed more than three beats dark red, the rest of the ventricle's pale blue,
+// blood outside it light grey.
+Vec3f stayColour(cardiac::Stay stay);
+
 // The top of the blood's colour scale for options.bloodColour: speedMax (m/s) or pressureMax
 // (mmHg), or the scenario's default where it is 0; 0 for origin colours, which have no scale.
 double colourScaleMax(const SceneOptions& options, const cardiac::Scenario& scenario);
@@ -90,6 +104,14 @@ double colourScaleMax(const SceneOptions& options, const cardiac::Scenario& scen
 Box sceneBounds(const cardiac::HeartSimulation& sim);
 
 Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& options);
+
+// The identities (id - firstBloodParticle) of the blood particles buildScene draws, in its
+// order; and a built scene's blood coloured by component from them, for a picture whose
+// colours are known only later (`heartsim render` colours the blood at a time by the
+// component it ends up in when that beat's systole is over).
+std::vector<std::size_t> drawnBloodIdentities(const cardiac::HeartSimulation& sim);
+void colourByComponent(Scene& scene, std::span<const std::size_t> identities,
+                       std::span<const cardiac::FlowComponent> components);
 
 // Sets the cut and the wall's opacity for one view. The cut is made only in views that look
 // at the cutting plane (front, for z = const): in the others it would be seen edge-on and
@@ -119,6 +141,26 @@ void addStreaks(FlowLines& lines, const PathlineRecorder& pathlines, double spee
 void addArrows(FlowLines& lines, const std::vector<Vec3f>& positions, const std::vector<Vec3f>& velocities,
                double speedMax, float width, int stride = 3);
 
+// The components a key lists, in order, with what each means and its colour in words.
+struct ComponentKeyRow {
+  cardiac::FlowComponent component;
+  const char* label;
+  const char* colourName;
+  const char* shortLabel;  // the component's name alone, for the viewer's narrow key
+};
+std::span<const ComponentKeyRow> componentKey();
+struct StayKeyRow {
+  cardiac::Stay stay;
+  const char* label;
+  const char* colourName;
+};
+std::span<const StayKeyRow> stayKey();
+// The rule the live colours follow, for the keys' tooltips and footers.
+inline constexpr const char* kComponentRule =
+    "from each end-diastole on, the blood then in the ventricle is new (entered in that diastole) or "
+    "earlier, and turns direct or delayed ejection once it leaves; the colours hold until the next "
+    "end-diastole";
+
 // The origins a key lists, in order, with what each means.
 struct OriginKeyRow {
   cardiac::FlowRegion origin;
@@ -128,7 +170,8 @@ struct OriginKeyRow {
 std::span<const OriginKeyRow> originKey();
 
 // The blood's colour key in the image's lower right corner, text scaled with the image: a bar
-// "blood speed (m/s)" or "blood pressure (mmHg)" from 0 to scaleMax, or the origin key.
+// "blood speed (m/s)" or "blood pressure (mmHg)" from 0 to scaleMax, or the origin, component or
+// stay key.
 [[nodiscard]] viz::Rect drawBloodLegend(viz::Image& image, BloodColour colour, double scaleMax);
 
 }  // namespace hs::render

@@ -186,6 +186,18 @@ TEST(CliLumped, CompareDrawsTwoLoopsOnOnePlot) {
   const CliResult r = runHeartsim("compare normal dilated-cardiomyopathy --threads 2 --out out", dir);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir / "out" / "pv_compare.png")) << r.err;
+  // Both runs' flow components side by side: the failing heart ejects far less of its new
+  // blood in the same beat (Eriksson et al. 2011: direct flow falls with EF).
+  EXPECT_NE(r.out.find("normal"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("dilated-cardiomyopathy"), std::string::npos) << r.out;
+  for (const char* row : {"retained inflow", "delayed ejection", "residual volume"})
+    EXPECT_NE(r.out.find(row), std::string::npos) << row << "\n" << r.out;
+  const auto direct = r.out.find("direct flow");
+  ASSERT_NE(direct, std::string::npos) << r.out;
+  double normalDirect = -1, dilatedDirect = -1;
+  ASSERT_EQ(std::sscanf(r.out.c_str() + direct, "direct flow %lf %lf", &normalDirect, &dilatedDirect), 2) << r.out;
+  EXPECT_GT(normalDirect, dilatedDirect + 10) << r.out;
+  EXPECT_GT(normalDirect, 20) << r.out;
   const CliResult bad = runHeartsim("compare heart-only normal --out bad", dir);
   EXPECT_EQ(bad.exitCode, 2) << bad.err;
   EXPECT_NE(bad.err.find("heart-only has no lumped circulation"), std::string::npos) << bad.err;

@@ -124,8 +124,33 @@ TEST_F(CliRender, BloodColouredByOriginOrPressure) {
 }
 
 TEST_F(CliRender, UnknownBloodColourNamesTheValidOnes) {
-  expectBadInput("normal --times 0 --blood-colour density --out D", "--blood-colour: unknown colour 'density'; valid: speed, pressure, origin");
+  expectBadInput("normal --times 0 --blood-colour density --out D",
+                 "--blood-colour: unknown colour 'density'; valid: speed, pressure, origin, components, stay");
   expectBadInput("normal --times 0 --pressure-max -1 --out D", "--pressure-max: must be a finite pressure >= 0");
+}
+
+// Flow components (render/scene.h): at the first beat's end-diastole (0.834 s) the blood is
+// coloured by what it does in that beat's systole, which the render steps on to: green direct
+// flow and yellow delayed ejection leave, so both show; the key names the four.
+bool directGreen(hs::viz::Rgb c) { return c.g > 110 && c.g > c.r + 50 && c.g > c.b + 40; }
+bool delayedYellow(hs::viz::Rgb c) { return c.r > 150 && c.g > 130 && c.b + 80 < c.g; }
+
+TEST_F(CliRender, BloodColouredByFlowComponent) {
+  const auto dir = scratchDir("render_components");
+  const CliResult r =
+      renderNoDisplay("normal --times 0.834 --views front --blood-colour components --out C --size 320x240", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  expectImages(dir / "C", {"t0.834_front.png"}, directGreen, 320, 240);
+  const hs::viz::Image image = hs::viz::Image::loadPng((dir / "C" / "t0.834_front.png").string());
+  EXPECT_GT(countPixels(image, delayedYellow), 100);
+}
+
+// Components and stays need beats sorting the blood: a scenario without a heart has none.
+TEST_F(CliRender, ComponentColoursNeedAHeartWithBlood) {
+  expectBadInput("dam-break --times 0 --blood-colour components --out D",
+                 "--blood-colour components: 'dam-break' has no heart with blood and valves");
+  expectBadInput("dam-break --times 0 --blood-colour stay --out D",
+                 "--blood-colour stay: 'dam-break' has no heart with blood and valves");
 }
 
 TEST_F(CliRender, UnknownLookFlowViewAndLabelSetNameTheValidOnes) {

@@ -2,6 +2,9 @@
 // normals, blood coloured by speed, the container as a wireframe, framing bounds.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <set>
+
 #include "cardiac/heart_simulation.h"
 #include "falling_block.h"
 #include "render/scene.h"
@@ -131,6 +134,51 @@ TEST(Scene, OriginColoursTellWhereTheBloodStarted) {
   EXPECT_GT(nInflow, 0u);
   EXPECT_GT(nVentricle, 0u);
   EXPECT_EQ(nInflow + nVentricle, scene.particles.colours.size());
+}
+
+// Blood coloured by component: each drawn particle takes its own identity's component (here
+// the identity mod 5, every component and None), the scene's order being
+// drawnBloodIdentities'; recolouring a built scene gives the same colours; no components (or a
+// list of the wrong size) draws all of it neutral.
+TEST(Scene, ComponentColoursFollowEachParticlesIdentity) {
+  hs::cardiac::Scenario scenario;
+  scenario.cycle.enabled = false;
+  scenario.blood.enabled = true;
+  scenario.blood.start = hs::cardiac::BloodSettings::Start::Vessel;
+  scenario.blood.particles = 2000;
+  const hs::cardiac::HeartSimulation sim(scenario, 1);
+  using hs::cardiac::FlowComponent;
+  std::vector<FlowComponent> components(sim.particles().size() - sim.firstBloodParticle());
+  for (std::size_t k = 0; k < components.size(); ++k) components[k] = FlowComponent(k % 5);
+  hs::render::SceneOptions options;
+  options.bloodColour = hs::render::BloodColour::Components;
+  options.components = &components;
+  const hs::render::Scene scene = hs::render::buildScene(sim, options);
+  const std::vector<std::size_t> ids = hs::render::drawnBloodIdentities(sim);
+  ASSERT_EQ(ids.size(), scene.particles.colours.size());
+  ASSERT_GT(ids.size(), 100u);
+  std::set<std::size_t> distinct;
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    EXPECT_EQ(scene.particles.colours[k], hs::render::componentColour(components[ids[k]])) << k;
+    distinct.insert(ids[k] % 5);
+  }
+  EXPECT_EQ(distinct.size(), 5u);
+  options.components = nullptr;
+  hs::render::Scene later = hs::render::buildScene(sim, options);
+  const Vec3f none = hs::render::componentColour(FlowComponent::None);
+  for (const Vec3f& c : later.particles.colours) EXPECT_EQ(c, none);
+  hs::render::colourByComponent(later, ids, components);
+  EXPECT_EQ(later.particles.colours, scene.particles.colours);
+  std::vector<FlowComponent> tooShort(3, FlowComponent::Direct);
+  options.components = &tooShort;
+  for (const Vec3f& c : hs::render::buildScene(sim, options).particles.colours) EXPECT_EQ(c, none);
+  // The four colours and the neutral one differ.
+  std::set<std::array<float, 3>> colours;
+  for (int c = 0; c < 5; ++c) {
+    const Vec3f v = hs::render::componentColour(FlowComponent(c));
+    colours.insert({v.x(), v.y(), v.z()});
+  }
+  EXPECT_EQ(colours.size(), 5u);
 }
 
 // Blood coloured by pressure: resting blood under gravity is compressed at the bottom (top

@@ -25,11 +25,8 @@ void FlowComponentTracker::endDiastole() {
       continue;
     }
     ++inside;
-    const std::int32_t entered = m_enteredDiastole[k];
-    m_atEndDiastole[k] = entered == m_diastole ? New : Earlier;
-    // Beats spent so far: this diastole is the first of them. From the start: at least m_diastole + 1.
-    const std::int32_t beats = entered == kBeforeTracking ? m_diastole + 1 : m_diastole - entered + 1;
-    longStay += beats > 3;
+    m_atEndDiastole[k] = m_enteredDiastole[k] == m_diastole ? New : Earlier;
+    longStay += beatsInside(k) > 3;
   }
   m_haveEndDiastole = true;
   m_stayedOverThreeBeats = inside > 0 ? double(longStay) / double(inside) : 0.0;
@@ -41,9 +38,14 @@ std::optional<FlowComponents> FlowComponentTracker::endSystole() {
     std::size_t direct = 0, retained = 0, delayed = 0, residual = 0, residenceSum = 0, residenceCount = 0;
     for (std::size_t k = 0; k < m_inside.size(); ++k) {
       if (m_atEndDiastole[k] == Absent) continue;
-      const bool left = !m_inside[k], fresh = m_atEndDiastole[k] == New;
-      direct += fresh && left, retained += fresh && !left;
-      delayed += !fresh && left, residual += !fresh && !left;
+      const bool left = !m_inside[k];
+      switch (componentOf(m_atEndDiastole[k] == New, left)) {
+        case FlowComponent::Direct: ++direct; break;
+        case FlowComponent::RetainedInflow: ++retained; break;
+        case FlowComponent::DelayedEjection: ++delayed; break;
+        case FlowComponent::Residual: ++residual; break;
+        case FlowComponent::None: break;
+      }
       if (left && m_enteredDiastole[k] != kBeforeTracking) {
         residenceSum += std::size_t(m_diastole - m_enteredDiastole[k] + 1);
         ++residenceCount;
@@ -63,6 +65,38 @@ std::optional<FlowComponents> FlowComponentTracker::endSystole() {
   m_haveEndDiastole = false;
   ++m_diastole;
   return beat;
+}
+
+std::int32_t FlowComponentTracker::beatsInside(std::size_t k) const {
+  // From the start: at least m_diastole + 1.
+  const std::int32_t entered = m_enteredDiastole[k];
+  return entered == kBeforeTracking ? m_diastole + 1 : m_diastole - entered + 1;
+}
+
+FlowComponent componentOf(bool enteredThisDiastole, bool left) {
+  if (enteredThisDiastole) return left ? FlowComponent::Direct : FlowComponent::RetainedInflow;
+  return left ? FlowComponent::DelayedEjection : FlowComponent::Residual;
+}
+
+std::vector<FlowComponent> FlowComponentTracker::components() const {
+  std::vector<FlowComponent> out(m_inside.size(), FlowComponent::None);
+  // The diastole the last end-diastole closed: endSystole() has begun the next one since.
+  const std::int32_t sorted = m_haveEndDiastole ? m_diastole : m_diastole - 1;
+  for (std::size_t k = 0; k < m_inside.size(); ++k) {
+    if (m_atEndDiastole[k] == Absent) continue;
+    // Ejected blood that comes round through the loop and enters again in a later diastole has
+    // still left in the beat being shown.
+    const bool left = !m_inside[k] || m_enteredDiastole[k] > sorted;
+    out[k] = componentOf(m_atEndDiastole[k] == New, left);
+  }
+  return out;
+}
+
+std::vector<Stay> FlowComponentTracker::stays() const {
+  std::vector<Stay> out(m_inside.size(), Stay::Outside);
+  for (std::size_t k = 0; k < m_inside.size(); ++k)
+    if (m_inside[k]) out[k] = beatsInside(k) > 3 ? Stay::OverThreeBeats : Stay::UpToThreeBeats;
+  return out;
 }
 
 void FlowComponentTracker::save(pbd::StateWriter& w) const {

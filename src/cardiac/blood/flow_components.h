@@ -31,6 +31,17 @@ struct FlowComponents {
   [[nodiscard]] double sum() const { return direct + retainedInflow + delayedEjection + residual; }
 };
 
+// Which of the four components a blood particle belongs to, for pictures; None: it was not in
+// the ventricle at the last end-diastole (or none has come yet).
+enum class FlowComponent : std::uint8_t { None, Direct, RetainedInflow, DelayedEjection, Residual };
+
+// The component of blood that was in the ventricle at an end-diastole, new (entered in that
+// diastole) or earlier, by whether it has left since: the rule the shares count by.
+FlowComponent componentOf(bool enteredThisDiastole, bool left);
+
+// How long a blood particle has been in the ventricle, for pictures of where blood stagnates.
+enum class Stay : std::uint8_t { Outside, UpToThreeBeats, OverThreeBeats };
+
 class FlowComponentTracker {
  public:
   explicit FlowComponentTracker(std::size_t particles = 0);
@@ -46,12 +57,26 @@ class FlowComponentTracker {
   // diastole begins.
   std::optional<FlowComponents> endSystole();
 
+  // Per particle (by identity), the live view's rule: from an end-diastole on, the blood that
+  // was in the ventricle then is new (retained inflow) or earlier (residual) and, once it has
+  // left, direct flow or delayed ejection; so at an end-systole each particle shows the
+  // component endSystole() counted it in. The colours stay until the next end-diastole sorts
+  // the blood again; blood that was not in the ventricle at the last end-diastole is None.
+  // Reads the bookkeeping only.
+  [[nodiscard]] std::vector<FlowComponent> components() const;
+  // Per particle (by identity): outside the ventricle, or in it for up to or more than three
+  // beats (more: entered four or more diastoles ago, counting the one in progress, or there
+  // since tracking began that long ago), as FlowComponents::stayedOverThreeBeats counts.
+  [[nodiscard]] std::vector<Stay> stays() const;
+
   void save(pbd::StateWriter& w) const;
   void load(pbd::StateReader& r);
 
  private:
   static constexpr std::int32_t kBeforeTracking = -1;
   enum AtEndDiastole : std::uint8_t { Absent = 0, New = 1, Earlier = 2 };
+  // Beats particle k has spent in the ventricle so far, this diastole's counted as the first.
+  [[nodiscard]] std::int32_t beatsInside(std::size_t k) const;
   std::vector<std::uint8_t> m_inside;
   std::vector<std::int32_t> m_enteredDiastole;  // kBeforeTracking: in the ventricle from the start
   std::vector<std::uint8_t> m_atEndDiastole;

@@ -42,6 +42,20 @@ double VentricleBlood::observe(const pbd::Particles& particles, std::span<const 
   return energy;
 }
 
+std::optional<FlowComponents> meanFlowComponents(std::span<const BeatFlowComponents> beats, std::size_t skipped) {
+  if (beats.size() <= skipped) return std::nullopt;
+  FlowComponents mean;
+  for (const BeatFlowComponents& b : beats.subspan(skipped)) {
+    mean.direct += b.shares.direct, mean.retainedInflow += b.shares.retainedInflow;
+    mean.delayedEjection += b.shares.delayedEjection, mean.residual += b.shares.residual;
+    mean.meanResidenceBeats += b.shares.meanResidenceBeats, mean.stayedOverThreeBeats += b.shares.stayedOverThreeBeats;
+  }
+  const double n = double(beats.size() - skipped);
+  mean.direct /= n, mean.retainedInflow /= n, mean.delayedEjection /= n, mean.residual /= n;
+  mean.meanResidenceBeats /= n, mean.stayedOverThreeBeats /= n;
+  return mean;
+}
+
 void VentricleBlood::save(pbd::StateWriter& w) const {
   m_tracker.save(w);
   w.fields(m_endDiastole, m_beats, m_energySum, m_fillingPeak, m_energySteps, m_cycles);

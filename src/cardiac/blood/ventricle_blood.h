@@ -10,6 +10,7 @@
 // come from the heart's phase (heart_phase.h): end-diastole when filling gives way to isovolumic
 // contraction (or straight to ejection), end-systole when ejection ends. Fed by the run's monitor
 // after each step with the flow meter's regions.
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -36,6 +37,11 @@ struct BeatFlowComponents {
   }
 };
 
+// The mean of the beats' components (every field, the particle count left 0) over the beats
+// after the first `skipped` (the first beats, while the blood settles into its path); none
+// when no beat is left.
+std::optional<FlowComponents> meanFlowComponents(std::span<const BeatFlowComponents> beats, std::size_t skipped);
+
 // The kinetic energy of the blood in the ventricle over one cardiac cycle, from an end-diastole
 // to the next (J): its time mean (the mean over the cycle's steps of E_k, the cycle mean Garg et
 // al. 2018 divide by the EDV) and its largest value while filling (the E and A jets).
@@ -60,6 +66,10 @@ class VentricleBlood {
 
   [[nodiscard]] const std::vector<BeatFlowComponents>& beats() const { return m_beats; }
   [[nodiscard]] const std::vector<CycleKineticEnergy>& cycles() const { return m_cycles; }
+  // Per blood particle, by identity (id - first): its component in the beat shown, and whether
+  // it has stayed more than three beats (FlowComponentTracker's rules), for pictures.
+  [[nodiscard]] std::vector<FlowComponent> components() const { return m_tracker.components(); }
+  [[nodiscard]] std::vector<Stay> stays() const { return m_tracker.stays(); }
   void save(pbd::StateWriter& w) const;
   void load(pbd::StateReader& r);
 

@@ -73,28 +73,18 @@ void addVentricleBloodReport(nlohmann::ordered_json& heart, const cardiac::Ventr
                                   {"residual", c.residual}};
   };
   nlohmann::ordered_json beats = nlohmann::json::array();
-  cardiac::FlowComponents mean;
-  std::size_t counted = 0;
-  for (std::size_t k = 0; k < blood.beats().size(); ++k) {
-    const cardiac::BeatFlowComponents& b = blood.beats()[k];
+  for (const cardiac::BeatFlowComponents& b : blood.beats()) {
     nlohmann::ordered_json beat = shares(b.shares);
     beat["end_diastole_s"] = b.endDiastole;
     beat["mean_residence_beats"] = b.shares.meanResidenceBeats;
     beat["stayed_over_3_beats"] = b.shares.stayedOverThreeBeats;
     beats.push_back(beat);
-    if (k < kSkipped) continue;
-    ++counted;
-    mean.direct += b.shares.direct, mean.retainedInflow += b.shares.retainedInflow;
-    mean.delayedEjection += b.shares.delayedEjection, mean.residual += b.shares.residual;
-    mean.meanResidenceBeats += b.shares.meanResidenceBeats, mean.stayedOverThreeBeats += b.shares.stayedOverThreeBeats;
   }
   nlohmann::ordered_json components = nullptr;
-  if (counted > 0) {
-    const double n = double(counted);
-    mean.direct /= n, mean.retainedInflow /= n, mean.delayedEjection /= n, mean.residual /= n;
-    components = shares(mean);
-    heart["mean_residence_beats"] = mean.meanResidenceBeats / n;
-    heart["stayed_over_3_beats"] = mean.stayedOverThreeBeats / n;
+  if (const std::optional<cardiac::FlowComponents> mean = cardiac::meanFlowComponents(blood.beats(), kSkipped)) {
+    components = shares(*mean);
+    heart["mean_residence_beats"] = mean->meanResidenceBeats;
+    heart["stayed_over_3_beats"] = mean->stayedOverThreeBeats;
   }
   heart["flow_components"] = components;
   heart["flow_component_beats"] = beats;

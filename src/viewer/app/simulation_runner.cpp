@@ -113,6 +113,12 @@ void readStatus(const SimulationState& state, ViewerStatus& status) {
   pump.thesisTiming = scenario.cycle.mode == cardiac::TimingMode::Thesis;
   pump.valves = step.circulation ? step.flowStep.valves : cardiac::ValveStates{};
   pump.valveMode = scenario.circulation.valveMode;
+  pump.flowComponents.reset();
+  pump.flowBeat = 0;
+  if (const cardiac::VentricleBlood* blood = state.monitor->ventricleBlood(); blood && !blood->beats().empty()) {
+    pump.flowComponents = blood->beats().back().shares;
+    pump.flowBeat = int(blood->beats().size());
+  }
   readCirculationStatus(state, status.circulation);
 }
 

@@ -50,7 +50,8 @@ render::Scene ViewerApp::exchange(double frameSeconds, const render::SceneOption
     readStatus(s, m_status);
     if (const cardiac::CirculationRecorder* recorder = s.monitor->circulation())
       m_circulation.update(recorder->samples(), recorder->beatStarts());
-    m_runs.update(m_status.pump.beats.recent, m_status.pump.scale, m_status.circulation.lumped);
+    m_runs.update(m_status.pump.beats.recent, m_status.pump.scale, m_status.circulation.lumped,
+                  m_status.pump.flowComponents);
     m_status.pump.lumped = m_status.circulation.lumped;
     m_status.pump.axes = m_axes;
     m_status.bloodColour = c.bloodColour;
@@ -65,7 +66,17 @@ render::Scene ViewerApp::exchange(double frameSeconds, const render::SceneOption
       m_pathlines.record(sim);
     else
       m_pathlines.clear();
-    scene = render::buildScene(sim, options);
+    // The blood's flow components and stays, from the monitor's bookkeeping, when shown.
+    render::SceneOptions drawn = options;
+    std::vector<cardiac::FlowComponent> components;
+    std::vector<cardiac::Stay> stays;
+    if (const cardiac::VentricleBlood* blood = s.monitor->ventricleBlood()) {
+      if (options.bloodColour == render::BloodColour::Components) components = blood->components();
+      if (options.bloodColour == render::BloodColour::Stay) stays = blood->stays();
+    }
+    drawn.components = &components;
+    drawn.stays = &stays;
+    scene = render::buildScene(sim, drawn);
   });
   m_dabs.clear();
   m_status.frameMs += 0.1 * (frameSeconds * 1000 - m_status.frameMs);
@@ -130,9 +141,14 @@ void ViewerApp::drawFrame(const std::string& captureTo) {
   options.clipZ = m_controls.clipZ;
   options.wallOpacity = m_controls.wallOpacity;
   options.beating = m_region.highlight(m_controls.region);
-  // While a region is chosen or painted, the blood lets it show through.
-  if (m_controls.region.paintMode || m_controls.region.showRegion) options.bloodOpacity = 0.3f;
-  options.bloodColour = render::BloodColour(std::clamp(m_controls.bloodColour, 0, 2));
+  options.bloodColour = render::BloodColour(std::clamp(m_controls.bloodColour, 0, 4));
+  // While a region is chosen or painted, the blood lets it show through; but where the blood's
+  // colours are the picture (its flow components, how long it stayed) a chosen region gives
+  // way to them, so that anterior-infarct's stagnant blood shows at its apex.
+  const bool bloodIsThePicture = options.bloodColour == render::BloodColour::Components ||
+                                 options.bloodColour == render::BloodColour::Stay;
+  if (m_controls.region.paintMode || (m_controls.region.showRegion && !bloodIsThePicture))
+    options.bloodOpacity = 0.3f;
   options.bloodLook = render::BloodLook(std::clamp(m_controls.bloodLook, 0, 1));
   options.flow = render::FlowView(std::clamp(m_controls.flowView, 0, 2));
   options.pathlines = &m_pathlines;

@@ -49,6 +49,9 @@ struct LessonStep {
   std::optional<std::string> scenario;           // a built-in scenario name
   std::optional<std::vector<int>> beatingSegments;  // AHA 1-17 that beat (from segments or rest_segments)
   std::vector<SliderSetting> sliders;
+  // The blood's colour from this step on (render::BloodColour as the control panel counts it:
+  // speed 0, pressure 1, origin 2, components 3, stay 4); a display setting, no restart.
+  std::optional<int> bloodColour;
   int beats = 0;  // complete beats to play before the result is shown
   std::optional<LessonPredict> predict;
   std::string result;       // shown once the beats are played; may quote figures

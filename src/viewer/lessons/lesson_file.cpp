@@ -12,6 +12,7 @@
 #include <map>
 
 #include "io/scenario/scenario_file.h"
+#include "render/scene.h"
 #include "viewer/lessons/lesson.h"
 #include "viewer/lessons/lesson_internal.h"
 #include "viewer/lessons/lesson_text.h"
@@ -62,9 +63,9 @@ constexpr SliderSpec kSliders[] = {
 };
 
 const std::vector<std::string> kLessonKeys = {"title", "description", "scenario"};
-const std::vector<std::string> kStepKeys = {"title",  "text",    "scenario",    "segments", "rest_segments",
-                                            "sliders", "play_beats", "predict", "result",  "explanation",
-                                            "mark"};
+const std::vector<std::string> kStepKeys = {"title",      "text",    "scenario", "segments",    "rest_segments",
+                                            "sliders",    "blood_colour", "play_beats", "predict", "result",
+                                            "explanation", "mark"};
 const std::vector<std::string> kPredictKeys = {"question", "choices", "answer", "scripted"};
 
 // Reads one table of the file; every error names the file, line, step (when in one) and key.
@@ -202,6 +203,7 @@ class LessonReader {
     if (r.get("scenario")) step.scenario = m_current = scenarioName(r, "scenario", true);
     readSegments(r, step);
     if (const toml::node* sliders = r.get("sliders")) readSliders(r, *sliders, step);
+    if (r.get("blood_colour")) readBloodColour(r, step);
     step.beats = int(r.integer("play_beats", 0, 20, "a whole number of beats 0-20").value_or(0));
     if (const toml::node* predict = r.get("predict")) step.predict = readPredict(r, *predict);
     step.result = r.text("result", false);
@@ -238,6 +240,13 @@ class LessonReader {
       if ((std::find(listed.begin(), listed.end(), s) != listed.end()) == beat) beating.push_back(s);
     if (beating.empty()) r.error(key, "leaves no segment beating: the heart would not beat at all");
     step.beatingSegments = beating;
+  }
+
+  void readBloodColour(const TableReader& r, LessonStep& step) {
+    const std::string name = r.text("blood_colour", true);
+    const std::optional<render::BloodColour> colour = render::parseBloodColour(name);
+    if (!colour) r.error("blood_colour", "unknown colour '" + name + "' (colours: speed, pressure, origin, components, stay)");
+    step.bloodColour = int(*colour);
   }
 
   void readSliders(const TableReader& r, const toml::node& node, LessonStep& step) {

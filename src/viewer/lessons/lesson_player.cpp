@@ -82,6 +82,16 @@ void LessonPlayer::enter(int index, bool replay, const std::vector<ScenarioChoic
   m_edits.clear();
   m_settle = {};
   const LessonStep& s = step();
+  // The blood's colour is a display setting, not restarted with a scenario: the one the lesson
+  // had chosen by this step: set on entering a step that chooses one, and restored on Back
+  // (speed before any step chose one).
+  std::optional<int> colour;
+  bool chooses = false;
+  for (std::size_t i = 0; i < m_lesson.steps.size(); ++i) {
+    chooses = chooses || m_lesson.steps[i].bloodColour.has_value();
+    if (int(i) <= index && m_lesson.steps[i].bloodColour) colour = m_lesson.steps[i].bloodColour;
+  }
+  if (replay ? chooses : s.bloodColour.has_value()) m_edits.push_back({Edit::Kind::BloodColour, colour.value_or(0)});
   if (!replay) {
     queueActions(s.scenario, s.beatingSegments, s.sliders, scenarios);
     return;
@@ -131,6 +141,9 @@ void LessonPlayer::writeEdit(const Edit& edit, ViewerControls& controls) const {
       return;
     case Edit::Kind::ToggleSegment:
       controls.region.segmentToggled = edit.value;
+      return;
+    case Edit::Kind::BloodColour:
+      controls.bloodColour = edit.value;
       return;
     case Edit::Kind::Settle:
       break;

@@ -93,8 +93,8 @@ class LessonPlayer {
 
  private:
   struct Edit {
-    enum class Kind { Scenario, ClearRegion, ToggleSegment, Settle } kind;
-    int value = 0;  // scenario index, or segment
+    enum class Kind { Scenario, ClearRegion, ToggleSegment, Settle, BloodColour } kind;
+    int value = 0;  // scenario index, segment, or blood colour
   };
   // What the Settle edit writes.
   struct Settle {

@@ -16,6 +16,11 @@ constexpr std::array<FigureInfo, std::size_t(LessonFigure::Count)> kFigures = {{
     {"sbp", "%.0f", "aortic systolic pressure, mmHg (lumped circulation)"},
     {"dbp", "%.0f", "aortic diastolic pressure, mmHg (lumped circulation)"},
     {"lvedp", "%.0f", "LV end-diastolic pressure, mmHg (lumped circulation)"},
+    {"direct", "%.0f", "direct flow, % of the end-diastolic volume (3D blood)"},
+    {"retained", "%.0f", "retained inflow, % of the end-diastolic volume (3D blood)"},
+    {"delayed", "%.0f", "delayed ejection, % of the end-diastolic volume (3D blood)"},
+    {"residual", "%.0f", "residual volume, % of the end-diastolic volume (3D blood)"},
+    {"stayed", "%.0f", "blood in the ventricle more than 3 beats, % of the end-diastolic volume (3D blood)"},
 }};
 
 std::optional<LessonFigure> figureNamed(std::string_view name) {
@@ -75,6 +80,13 @@ LessonFigures measuredFigures(const ViewerStatus& status) {
     set(LessonFigure::Edv, c.edv);
     set(LessonFigure::Esv, c.esv);
     if (c.heartRate > 0) set(LessonFigure::Hr, c.heartRate), set(LessonFigure::Co, c.cardiacOutput);
+  }
+  if (const std::optional<cardiac::FlowComponents>& c = pump.flowComponents; c && c->particles > 0) {
+    set(LessonFigure::Direct, 100 * c->direct);
+    set(LessonFigure::Retained, 100 * c->retainedInflow);
+    set(LessonFigure::Delayed, 100 * c->delayedEjection);
+    set(LessonFigure::Residual, 100 * c->residual);
+    set(LessonFigure::Stayed, 100 * c->stayedOverThreeBeats);
   }
   if (const auto& beat = status.circulation.lastBeat; status.circulation.lumped && beat && beat->edv > 0) {
     const double mL = 1e6;

@@ -13,7 +13,7 @@
 
 namespace hs::viewer {
 
-enum class LessonFigure { Ef, Sv, Edv, Esv, Co, Hr, Sbp, Dbp, Lvedp, Count };
+enum class LessonFigure { Ef, Sv, Edv, Esv, Co, Hr, Sbp, Dbp, Lvedp, Direct, Retained, Delayed, Residual, Stayed, Count };
 
 struct FigureInfo {
   const char* name;    // as written in a placeholder: "ef"
@@ -32,7 +32,8 @@ struct LessonFigures {
 
 // The last complete beat's figures as the panels show them: with the lumped circulation its
 // beat (the circulation strip under the heart: volumes, EF, pressures), otherwise the pump
-// panel's (the 3D cavity); heart rate and cardiac output from the pump panel.
+// panel's (the 3D cavity); heart rate and cardiac output from the pump panel; the flow
+// components from the pump panel's last beat of the 3D blood.
 LessonFigures measuredFigures(const ViewerStatus& status);
 
 // "" when every placeholder of `text` names a figure and, after '@', one of `marks`; else one

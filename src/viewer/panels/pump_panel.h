@@ -8,6 +8,9 @@
 // thread. Needs an ImGui frame in progress.
 #include <string>
 
+#include <optional>
+
+#include "cardiac/blood/flow_components.h"
 #include "cardiac/circulation.h"
 #include "cardiac/circulation/heart_phase.h"
 #include "viewer/plots/plot_axes.h"
@@ -30,6 +33,10 @@ struct PumpStatus {
   cardiac::ValveMode valveMode = cardiac::ValveMode::Timing;
   bool lumped = false;  // the pressures are the lumped circulation's (LV, atrium, aorta)
   PlotAxes axes;        // the plots' fixed value axes
+  // The 3D blood's flow components of the last beat whose systole has ended (fractions of its
+  // end-diastolic volume, cardiac/blood/flow_components.h) and that beat's number; none before.
+  std::optional<cardiac::FlowComponents> flowComponents;
+  int flowBeat = 0;
 };
 
 struct PumpControls {

@@ -67,6 +67,42 @@ void originLegend() {
   }
 }
 
+// Blood coloured by flow component or by how long it stayed: one swatch per row, the rule in
+// the tooltip.
+template <class Rows, class Colour, class Label>
+void swatchLegend(const char* title, const Rows& rows, Colour colour, Label label, const char* tip) {
+  ImGui::TextUnformatted(title);
+  tooltip(tip);
+  for (const auto& row : rows) {
+    const render::Vec3f c = colour(row);
+    ImGui::TextColored(ImVec4(c.x(), c.y(), c.z(), 1), "o");
+    ImGui::SameLine();
+    ImGui::TextUnformatted(label(row));
+    tooltip(tip);
+  }
+}
+
+void componentLegend() {
+  static const std::string tip = [] {
+    std::string t = "The flow components of 4D-flow MRI (Bolger 2007, Eriksson 2010), of the blood in the "
+                    "ventricle at end-diastole:";
+    for (const render::ComponentKeyRow& row : render::componentKey()) t += std::string("\n  ") + row.label;
+    return t + ".\nThe colours: " + render::kComponentRule + ". The shares are in the pump panel.";
+  }();
+  swatchLegend(
+      "Blood by flow component", render::componentKey(),
+      [](const render::ComponentKeyRow& r) { return render::componentColour(r.component); },
+      [](const render::ComponentKeyRow& r) { return r.shortLabel; }, tip.c_str());
+}
+
+void stayLegend() {
+  swatchLegend("Blood by how long it stayed", render::stayKey(),
+               [](const render::StayKeyRow& r) { return render::stayColour(r.stay); },
+               [](const render::StayKeyRow& r) { return r.label; },
+               "How many beats each particle has been in the ventricle, counted from the diastole it entered "
+               "in: blood that stays long is slow blood, where a clot can form (an akinetic apex).");
+}
+
 void simulationSection(ViewerControls& c, const ViewerStatus& s) {
   if (ImGui::Button(c.playing ? "Pause" : "Play", ImVec2(54, 0))) c.playing = !c.playing;
   tooltip("Run or pause the simulation (Space)");
@@ -197,11 +233,13 @@ void displaySection(ViewerControls& c, const ViewerStatus& s) {
     tooltip("Below 1 the wall is drawn see-through (0.1 to 1, no unit)");
   }
   if (s.hasBlood) {
-    const char* kinds[] = {"speed", "pressure", "origin"};
-    ImGui::Combo("blood colour", &c.bloodColour, kinds, 3);
+    const char* kinds[] = {"speed", "pressure", "origin", "components", "stay"};
+    ImGui::Combo("blood colour", &c.bloodColour, kinds, 5);
     tooltip("What the blood's colour shows: its speed (m/s) or its pressure (mmHg, from the density "
-            "solve), both smoothed over the neighbours, or where it started (inflow vessel, "
-            "ventricle, or outside, through the loop)");
+            "solve), both smoothed over the neighbours; where it started (inflow vessel, "
+            "ventricle, or outside, through the loop); its flow component in the beat (green direct, "
+            "blue retained inflow, yellow delayed ejection, red residual); or whether it has stayed "
+            "in the ventricle more than 3 beats");
     const char* looks[] = {"liquid", "spheres"};
     ImGui::Combo("blood look", &c.bloodLook, looks, 2);
     tooltip("Liquid: a smooth surface over the particles (screen-space fluid); spheres: each "
@@ -310,6 +348,8 @@ OverlayBox drawColourKey(const ViewerStatus& status, float leftEdge, float botto
         scaleLegend("Blood pressure (mmHg)", status.pressureMax, "mmHg");
         break;
       case render::BloodColour::Origin: originLegend(); break;
+      case render::BloodColour::Components: componentLegend(); break;
+      case render::BloodColour::Stay: stayLegend(); break;
     }
   }
   const OverlayBox box = currentWindowBox();

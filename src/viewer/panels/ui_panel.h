@@ -34,7 +34,7 @@ struct ViewerControls {
   bool clip = true;
   float clipZ = 0;  // m: what lies at z > clipZ is cut away
   float wallOpacity = 1;
-  int bloodColour = 0;  // render::BloodColour: speed, pressure, origin
+  int bloodColour = 0;  // render::BloodColour: speed, pressure, origin, components, stay
   int bloodLook = 0;    // render::BloodLook: liquid, spheres
   int flowView = 0;     // render::FlowView: off, streaks, arrows
   bool showHelp = false;

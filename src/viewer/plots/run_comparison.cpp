@@ -86,8 +86,9 @@ std::vector<OverlaySpan> overlaySpans(std::span<const double> onsets, double per
 }
 
 void RunComparison::update(std::span<const cardiac::BeatSummary> completeBeats, const VolumeScale& scale,
-                           bool lumped) {
+                           bool lumped, const std::optional<cardiac::FlowComponents>& flowComponents) {
   m_current.beats.assign(completeBeats.begin(), completeBeats.end());
+  m_current.flowComponents = flowComponents;
   m_current.scale = scale;
   m_current.lumped = lumped;
 }

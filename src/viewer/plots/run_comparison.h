@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cardiac/blood/flow_components.h"
 #include "cardiac/circulation/beat_metrics.h"
 #include "cardiac/circulation/circulation_trace.h"
 #include "viewer/plots/circulation_history.h"
@@ -51,6 +52,8 @@ struct RunRecord {
   std::vector<cardiac::BeatSummary> beats;      // the last complete beats, oldest first
   std::vector<PumpSample> beatCurve;            // the last complete beat (kept at the restart)
   std::vector<cardiac::CirculationSample> loop;  // its pressure-volume loop (kept at the restart)
+  // The 3D blood's flow components of its last beat (none without blood and valves).
+  std::optional<cardiac::FlowComponents> flowComponents;
   [[nodiscard]] std::optional<BeatMean> mean(int n = kMeanBeats) const {
     return meanOfLastBeats(beats, n, scale);
   }
@@ -63,7 +66,8 @@ struct RunRecord {
 // has nothing to compare: the older "before" stays.
 class RunComparison {
  public:
-  void update(std::span<const cardiac::BeatSummary> completeBeats, const VolumeScale& scale, bool lumped);
+  void update(std::span<const cardiac::BeatSummary> completeBeats, const VolumeScale& scale, bool lumped,
+              const std::optional<cardiac::FlowComponents>& flowComponents = std::nullopt);
   // Call before the histories are cleared for the new run.
   void restart(std::string label, const PlotHistory& history, const CirculationHistory& circulation);
 

@@ -88,5 +88,63 @@ TEST(FlowComponents, ACheckpointResumesTheBookkeeping) {
   EXPECT_DOUBLE_EQ(ca->delayedEjection, cb->delayedEjection);
 }
 
+// One character per particle: '.' None, 'D' direct, 'R' retained inflow, 'Y' delayed ejection
+// (the papers' yellow), 'S' residual (stayed).
+std::string letters(const std::vector<FlowComponent>& components) {
+  std::string s;
+  for (const FlowComponent c : components) s += ".DRYS"[int(c)];
+  return s;
+}
+
+TEST(FlowComponents, EachParticleShowsItsComponentFromEndDiastoleOn) {
+  FlowComponentTracker tracker(6);
+  // 0-2 in the ventricle from the start; 3-5 in the atrium.
+  tracker.observe(inside("111000"));
+  EXPECT_EQ(letters(tracker.components()), "......") << "no end-diastole yet";
+  // Diastole 1: 3 and 4 enter; 5 stays out.
+  tracker.observe(inside("111110"));
+  EXPECT_EQ(letters(tracker.components()), "......") << "still filling";
+  tracker.endDiastole();
+  // At end-diastole nothing has left: new blood is retained inflow, earlier blood residual.
+  EXPECT_EQ(letters(tracker.components()), "SSSRR.");
+  // Early systole: 0 (earlier) leaves.
+  tracker.observe(inside("011110"));
+  EXPECT_EQ(letters(tracker.components()), "YSSRR.");
+  // End-systole: 3 (new) has left too; the colours are endSystole's count.
+  tracker.observe(inside("011010"));
+  EXPECT_EQ(letters(tracker.components()), "YSSDR.");
+  const std::optional<FlowComponents> beat = tracker.endSystole();
+  ASSERT_TRUE(beat);
+  EXPECT_DOUBLE_EQ(beat->direct, 1.0 / 5);
+  EXPECT_DOUBLE_EQ(beat->retainedInflow, 1.0 / 5);
+  EXPECT_DOUBLE_EQ(beat->delayedEjection, 1.0 / 5);
+  EXPECT_DOUBLE_EQ(beat->residual, 2.0 / 5);
+  EXPECT_EQ(letters(tracker.components()), "YSSDR.") << "the beat just counted";
+  // Diastole 2: 0 comes round through the loop and enters again, 5 enters for the first time.
+  // Until the next end-diastole the last beat's colours stay: 0 still left in it, 5 was not
+  // there at its end-diastole.
+  tracker.observe(inside("111011"));
+  EXPECT_EQ(letters(tracker.components()), "YSSDR.");
+  tracker.endDiastole();
+  EXPECT_EQ(letters(tracker.components()), "RSS.SR") << "sorted again: 0 and 5 new, 3 outside";
+}
+
+TEST(FlowComponents, BloodStayingMoreThanThreeBeatsIsMarked) {
+  FlowComponentTracker tracker(3);
+  tracker.observe(inside("100"));  // 0 from the start
+  for (int beat = 1; beat <= 4; ++beat) {
+    tracker.observe(inside(beat == 1 ? "110" : "111"));  // 1 enters in diastole 1, 2 in diastole 2
+    tracker.endDiastole();
+    const Stay longer = beat >= 4 ? Stay::OverThreeBeats : Stay::UpToThreeBeats;
+    const std::vector<Stay> stays = tracker.stays();
+    EXPECT_EQ(stays[0], longer) << "beat " << beat;
+    EXPECT_EQ(stays[1], longer) << "beat " << beat;
+    EXPECT_EQ(stays[2], beat == 1 ? Stay::Outside : Stay::UpToThreeBeats) << "beat " << beat << ": three beats at most";
+    tracker.endSystole();
+  }
+  tracker.observe(inside("011"));
+  EXPECT_EQ(tracker.stays()[0], Stay::Outside) << "ejected at last";
+}
+
 }  // namespace
 }  // namespace hs::cardiac

@@ -31,7 +31,7 @@ std::string errorOf(const std::string& text) {
 
 TEST(LessonFile, BuiltinLessonsLoad) {
   const std::vector<std::string> names = builtinLessonNames();
-  for (const char* expected : {"preload-afterload", "regional-wall-motion", "rhythm"})
+  for (const char* expected : {"preload-afterload", "regional-wall-motion", "rhythm", "where-blood-goes"})
     EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
   for (const std::string& name : names) {
     const Lesson lesson = loadLesson(name);
@@ -117,6 +117,27 @@ TEST(LessonFile, BadSegmentIsNamed) {
   EXPECT_NE(errorOf(kHead + "[[step]]\ntext = \"t\"\nrest_segments = [0]\n").find("got 0"), std::string::npos);
   EXPECT_NE(errorOf(kHead + "[[step]]\ntext = \"t\"\nsegments = [2, 2]\n").find("listed twice"), std::string::npos);
   EXPECT_NE(errorOf(kHead + "[[step]]\ntext = \"t\"\nsegments = []\n").find("no segment beating"), std::string::npos);
+}
+
+TEST(LessonFile, BloodColourIsReadAndABadOneIsNamed) {
+  const Lesson lesson = parseLesson(kHead + "[[step]]\ntext = \"t\"\nblood_colour = \"components\"\n", "x.toml");
+  ASSERT_TRUE(lesson.steps[0].bloodColour.has_value());
+  EXPECT_EQ(*lesson.steps[0].bloodColour, 3);  // render::BloodColour::Components, as the panel counts
+  std::string e = errorOf(kHead + "[[step]]\ntext = \"t\"\nblood_colour = \"rainbow\"\n");
+  EXPECT_EQ(e, "x.toml:6: step 1: key 'blood_colour': unknown colour 'rainbow' (colours: speed, pressure, origin, "
+               "components, stay)");
+  e = errorOf(kHead + "[[step]]\ntext = \"t\"\nblood_colour = 3\n");
+  EXPECT_NE(e.find("step 1: key 'blood_colour': expected a string"), std::string::npos) << e;
+}
+
+TEST(LessonFile, WhereBloodGoesShowsTheComponentsThenTheStays) {
+  const Lesson lesson = loadLesson("where-blood-goes");
+  ASSERT_EQ(lesson.steps.size(), 3u);
+  EXPECT_EQ(lesson.steps[0].bloodColour, std::optional<int>(3));
+  EXPECT_EQ(lesson.steps[1].scenario, std::optional<std::string>("dilated-cardiomyopathy"));
+  ASSERT_TRUE(lesson.steps[1].predict.has_value());
+  EXPECT_EQ(lesson.steps[1].predict->answer, 1);  // the dilated heart keeps its blood longest
+  EXPECT_EQ(lesson.steps[2].bloodColour, std::optional<int>(4));
 }
 
 TEST(LessonFile, UnknownScenarioIsNamed) {

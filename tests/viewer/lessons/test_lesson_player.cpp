@@ -104,6 +104,28 @@ TEST(LessonPlayer, ActionsGoOutOneAFrameAsThePanelsWould) {
   EXPECT_FALSE(controls.playing);
 }
 
+// The blood's colour is a display setting: set on entering the step that chooses it, kept by
+// the steps after, and put back on Back to a step before any chose one.
+TEST(LessonPlayer, BloodColourIsSetByItsStepAndRestoredOnBack) {
+  Lesson lesson = twoStepLesson();
+  lesson.steps[1].bloodColour = 3;
+  LessonPlayer player(lesson, false);
+  ViewerControls controls;
+  frame(player, statusWith(0), controls);
+  EXPECT_EQ(controls.bloodColour, 0) << "step 1 chooses none";
+  frame(player, statusWith(2), controls);
+  ASSERT_EQ(player.stage(), StepStage::Done);
+  LessonRequests next;
+  next.next = true;
+  player.frame(next, statusWith(2), kScenarios, controls);
+  EXPECT_EQ(controls.bloodColour, 3) << "the first action of step 2";
+  LessonRequests back;
+  back.back = true;
+  player.frame(back, statusWith(0), kScenarios, controls);
+  EXPECT_EQ(player.stepIndex(), 0);
+  EXPECT_EQ(controls.bloodColour, 0) << "back before any step chose a colour: speed";
+}
+
 TEST(LessonPlayer, AnswerPlaysTheBeatsAndTheResultQuotesTheMark) {
   LessonPlayer player(twoStepLesson(), false);
   ViewerControls controls;

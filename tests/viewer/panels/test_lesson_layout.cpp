@@ -62,6 +62,12 @@ ViewerStatus adultStatus(int beats) {
   status.pump.beats.settled = true;
   for (int k = 0; k < beats; ++k)
     status.pump.beats.played.push_back(completeBeat(k + 1, 0.55 + 0.1 * (k % 5), 100 + 5 * (k % 5), 45));
+  // The blood's flow components of the last beat (the pump panel's bar).
+  cardiac::FlowComponents shares;
+  shares.direct = 0.38, shares.retainedInflow = 0.16, shares.delayedEjection = 0.16, shares.residual = 0.30;
+  shares.particles = 1000;
+  status.pump.flowComponents = shares;
+  status.pump.flowBeat = beats;
   return status;
 }
 
@@ -97,8 +103,10 @@ TEST_P(LessonLayout, EveryStepOfEveryLessonLeavesTheHeartInSightAndCutsNoText) {
     int beats = 3, shown = 0;
     std::map<std::pair<int, int>, bool> seen;  // (step, stage) drawn
     for (int frame = 0; frame < 2000 && !player.finished(); ++frame) {
-      const ViewerStatus status = adultStatus(beats);
+      ViewerStatus status = adultStatus(beats);
       player.frame(requests, status, scenarios, controls);
+      status.bloodColour = controls.bloodColour;  // the key follows the lesson's colour, as the app's
+
       const std::pair<int, int> moment{player.stepIndex(), int(player.stage())};
       if (!seen[moment]) {
         seen[moment] = true;

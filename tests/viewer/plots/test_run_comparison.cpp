@@ -109,6 +109,21 @@ TEST(RunComparison, ARestartMovesTheRunToBefore) {
   EXPECT_NEAR(runs.previous()->mean()->figures.esv, 70, 1e-9);
 }
 
+// The pump panel's share bar: the run's last flow components go to "before" with it.
+TEST(RunComparison, TheFlowComponentsGoToBeforeWithTheRun) {
+  RunComparison runs;
+  runs.restart("normal", PlotHistory(), CirculationHistory());
+  cardiac::FlowComponents shares;
+  shares.direct = 0.4, shares.retainedInflow = 0.2, shares.delayedEjection = 0.2, shares.residual = 0.2;
+  shares.particles = 100;
+  runs.update(std::vector{beat(120, 50)}, kReal, true, shares);
+  EXPECT_TRUE(runs.current().flowComponents);
+  runs.restart("dilated-cardiomyopathy", beats(2, 50), CirculationHistory());
+  ASSERT_TRUE(runs.previous() && runs.previous()->flowComponents);
+  EXPECT_DOUBLE_EQ(runs.previous()->flowComponents->direct, 0.4);
+  EXPECT_FALSE(runs.current().flowComponents) << "the new run has no beat yet";
+}
+
 TEST(RunComparison, RunsAtAnotherScaleAreNotDrawnOnTheSameAxes) {
   RunComparison runs;
   runs.update(std::vector{beat(120, 50)}, kReal, true);
