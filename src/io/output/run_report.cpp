@@ -131,6 +131,8 @@ void addEchoReport(nlohmann::ordered_json& heart, const cardiac::EchoVelocities&
   heart["mitral_e_m_s"] = mean(e, counted);
   heart["mitral_a_m_s"] = mean(a, withA);
   heart["echo_beats"] = beats;
+}
+
 // The E-wave filling vortex (cardiac/blood/filling_vortex.h): each beat's reading at its E peak,
 // and the means over the complete beats after the first two in which a ring was found (null
 // before). The position is a share of the long axis from the mitral plane (Elbaz et al. 2014:
