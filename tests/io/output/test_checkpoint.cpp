@@ -92,9 +92,11 @@ TEST(Checkpoint, ForeignFileHasBadMagic) {
 
 TEST(Checkpoint, OtherVersionIsNamed) {
   std::vector<std::uint8_t> bytes = normalCheckpointBytes();
-  bytes[8] = 7;
+  const std::uint8_t other = kCheckpointVersion + 1;  // a version this heartsim does not read
+  bytes[8] = other;
   EXPECT_EQ(thrownMessage<CheckpointError>([&] { decodeCheckpoint(bytes, "a.hsck"); }),
-            "a.hsck: format version 7; this heartsim reads version " + std::to_string(kCheckpointVersion));
+            "a.hsck: format version " + std::to_string(other) + "; this heartsim reads version " +
+                std::to_string(kCheckpointVersion));
 }
 
 TEST(Checkpoint, OtherPrecisionIsNamed) {
