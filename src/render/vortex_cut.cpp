@@ -76,7 +76,7 @@ viz::Image drawEVortexCut(const cardiac::EVortexView& view, int height, const st
       "colour: vorticity out of the cut, red clockwise / blue anticlockwise as drawn, +-" + fixed(scale, 0) +
           " 1/s; grey: no blood (wall, outside)",
       "arrows: in-plane velocity (SPH average), longest " + fixed(fastest, 2) +
-          " m/s; rings: vortex cores (half-peak |vorticity|), crossed: the ring's two",
+          " m/s; rings: vortex cores (half-peak |vorticity|), crossed: the ring's two cores",
       "cut: the plane of the long axis and the mitral orifice's centre (three-chamber view), " +
           fixed(g.spacing * 1e3, 1) + " mm grid"};
   int textWidth = 0;
