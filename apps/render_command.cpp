@@ -161,6 +161,13 @@ render::SceneOptions sceneOptionsFor(const RenderOptions& options, bool heart) {
   return scene;
 }
 
+// " colour label" for each row of a colour key, comma-separated.
+template <class Rows>
+void appendKeyRows(std::string& footer, const Rows& rows) {
+  for (const auto& row : rows) footer += std::string(" ") + row.colourName + " " + row.label + ",";
+  footer.pop_back();
+}
+
 // The contact sheet's colour key: what the wall's and the blood's colours mean.
 std::string sheetFooter(const cardiac::HeartSimulation& sim, const render::SceneOptions& scene, double clipZ,
                         double scaleMax) {
@@ -184,21 +191,15 @@ std::string sheetFooter(const cardiac::HeartSimulation& sim, const render::Scene
       break;
     case render::BloodColour::Origin:
       footer += "blood coloured by where it started:";
-      for (const render::OriginKeyRow& row : render::originKey())
-        footer += std::string(" ") + row.colourName + " " + row.label + ",";
-      footer.pop_back();
+      appendKeyRows(footer, render::originKey());
       break;
     case render::BloodColour::Components:
       footer += "blood coloured by its flow component in the beat whose systole ends next:";
-      for (const render::ComponentKeyRow& row : render::componentKey())
-        footer += std::string(" ") + row.colourName + " " + row.label + ",";
-      footer.pop_back();
+      appendKeyRows(footer, render::componentKey());
       break;
     case render::BloodColour::Stay:
       footer += "blood coloured by how long it has been in the ventricle:";
-      for (const render::StayKeyRow& row : render::stayKey())
-        footer += std::string(" ") + row.colourName + " " + row.label + ",";
-      footer.pop_back();
+      appendKeyRows(footer, render::stayKey());
       break;
   }
   return footer;

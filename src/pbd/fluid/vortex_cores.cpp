@@ -4,41 +4,52 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 namespace hs::pbd {
 
-std::vector<double> planeVorticity(const PlaneField& field) {
+namespace {
+
+// The in-plane velocity gradient at node (i, j) by central differences: a = du/du, b = du/dv,
+// c = dv/du, d = dv/dv (u, v the plane's axes); none where a neighbour holds no blood.
+struct PlaneGradient {
+  double a, b, c, d;
+};
+std::optional<PlaneGradient> gradientAt(const PlaneField& field, int i, int j) {
   const PlaneGrid& g = field.grid;
-  std::vector<double> omega(g.size(), std::numeric_limits<double>::quiet_NaN());
+  if (!field.isFilled(i - 1, j) || !field.isFilled(i + 1, j) || !field.isFilled(i, j - 1) || !field.isFilled(i, j + 1))
+    return std::nullopt;
   const double twoS = 2 * g.spacing;
-  for (int j = 0; j < g.rows; ++j)
-    for (int i = 0; i < g.columns; ++i) {
-      if (!field.isFilled(i - 1, j) || !field.isFilled(i + 1, j) || !field.isFilled(i, j - 1) ||
-          !field.isFilled(i, j + 1))
-        continue;
-      const double dvvDu = (field.vv[g.index(i + 1, j)] - field.vv[g.index(i - 1, j)]) / twoS;
-      const double dvuDv = (field.vu[g.index(i, j + 1)] - field.vu[g.index(i, j - 1)]) / twoS;
-      omega[g.index(i, j)] = dvvDu - dvuDv;
-    }
-  return omega;
+  const std::size_t e = g.index(i + 1, j), w = g.index(i - 1, j), n = g.index(i, j + 1), s = g.index(i, j - 1);
+  return PlaneGradient{(field.vu[e] - field.vu[w]) / twoS, (field.vu[n] - field.vu[s]) / twoS,
+                       (field.vv[e] - field.vv[w]) / twoS, (field.vv[n] - field.vv[s]) / twoS};
 }
 
-std::vector<double> planeSwirl(const PlaneField& field) {
+// f(gradient) at every node with a whole stencil; NaN elsewhere.
+template <class F>
+std::vector<double> mapGradient(const PlaneField& field, F f) {
   const PlaneGrid& g = field.grid;
-  std::vector<double> swirl(g.size(), std::numeric_limits<double>::quiet_NaN());
-  const double twoS = 2 * g.spacing;
+  std::vector<double> out(g.size(), std::numeric_limits<double>::quiet_NaN());
   for (int j = 0; j < g.rows; ++j)
-    for (int i = 0; i < g.columns; ++i) {
-      if (!field.isFilled(i - 1, j) || !field.isFilled(i + 1, j) || !field.isFilled(i, j - 1) ||
-          !field.isFilled(i, j + 1))
-        continue;
-      const std::size_t e = g.index(i + 1, j), w = g.index(i - 1, j), n = g.index(i, j + 1), s = g.index(i, j - 1);
-      const double a = (field.vu[e] - field.vu[w]) / twoS, b = (field.vu[n] - field.vu[s]) / twoS;
-      const double c = (field.vv[e] - field.vv[w]) / twoS, d = (field.vv[n] - field.vv[s]) / twoS;
-      const double discriminant = (a - d) * (a - d) + 4 * b * c;
-      swirl[g.index(i, j)] = discriminant < 0 ? 0.5 * std::sqrt(-discriminant) : 0.0;
-    }
-  return swirl;
+    for (int i = 0; i < g.columns; ++i)
+      if (const std::optional<PlaneGradient> grad = gradientAt(field, i, j)) out[g.index(i, j)] = f(*grad);
+  return out;
+}
+
+}  // namespace
+
+// omega = dv/du - du/dv.
+std::vector<double> planeVorticity(const PlaneField& field) {
+  return mapGradient(field, [](const PlaneGradient& g) { return g.c - g.b; });
+}
+
+// The swirling strength: the imaginary part of the gradient's complex eigenvalues,
+// sqrt(-((a - d)^2 + 4 b c)) / 2 where the discriminant is negative, else 0.
+std::vector<double> planeSwirl(const PlaneField& field) {
+  return mapGradient(field, [](const PlaneGradient& g) {
+    const double discriminant = (g.a - g.d) * (g.a - g.d) + 4 * g.b * g.c;
+    return discriminant < 0 ? 0.5 * std::sqrt(-discriminant) : 0.0;
+  });
 }
 
 namespace {
