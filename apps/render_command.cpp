@@ -331,13 +331,29 @@ int drawTimes(cardiac::HeartSimulation& sim, Offscreen& out, const RenderPlan& p
   return kExitOk;
 }
 
+// Runs `prepare`; a bad input or an output that cannot be written is said in one line and gives
+// the exit code (kExitBadInput, kExitFailure); nothing when it succeeded.
+template <class Prepare>
+std::optional<int> exitOnInputError(Prepare prepare) {
+  try {
+    prepare();
+  } catch (const BadInput& e) {
+    std::cerr << "heartsim: error: " << e.message << '\n';
+    return kExitBadInput;
+  } catch (const WriteFailure& e) {
+    std::cerr << "heartsim: error: " << e.message << '\n';
+    return kExitFailure;
+  }
+  return std::nullopt;
+}
+
 // --e-vortex: steps to the end of beat `beat`'s early filling under a monitor that reads the
 // filling vortex (cardiac/run_monitor.h), then draws its view at the E peak.
 int renderEVortex(const RenderOptions& options, const cardiac::Scenario& scenario) {
   const int beat = *options.eVortexBeat;
   fs::path outDir;
   int height = 0;
-  try {
+  if (const std::optional<int> failed = exitOnInputError([&] {
     if (beat < 1) throw BadInput{"--e-vortex: beat " + std::to_string(beat) + " is not a beat (give 1 or more)"};
     if (!scenario.circulation.lumped || !scenario.blood.enabled)
       throw BadInput{"--e-vortex: scenario '" + scenario.name +
@@ -346,13 +362,8 @@ int renderEVortex(const RenderOptions& options, const cardiac::Scenario& scenari
     height = parseSize(options.size).second;
     outDir = options.outDir.empty() ? io::defaultOutputFolder(scenario.name) / "render" : fs::path(options.outDir);
     prepareOutputDir(outDir);
-  } catch (const BadInput& e) {
-    std::cerr << "heartsim: error: " << e.message << '\n';
-    return kExitBadInput;
-  } catch (const WriteFailure& e) {
-    std::cerr << "heartsim: error: " << e.message << '\n';
-    return kExitFailure;
-  }
+  }))
+    return *failed;
   const int threads = options.threads > 0 ? options.threads : omp_get_num_procs();
   int setupError = kExitOk;
   const std::unique_ptr<cardiac::HeartSimulation> sim = makeSimulation(scenario, threads, options.scenario, setupError);
@@ -411,15 +422,7 @@ int renderCommand(const RenderOptions& options) {
   const cardiac::Scenario& scenario = *loaded;
   if (options.eVortexBeat) return renderEVortex(options, scenario);
   RenderPlan plan;
-  try {
-    plan = planRender(options, scenario);
-  } catch (const BadInput& e) {
-    std::cerr << "heartsim: error: " << e.message << '\n';
-    return kExitBadInput;
-  } catch (const WriteFailure& e) {
-    std::cerr << "heartsim: error: " << e.message << '\n';
-    return kExitFailure;
-  }
+  if (const std::optional<int> failed = exitOnInputError([&] { plan = planRender(options, scenario); })) return *failed;
   const int threads = options.threads > 0 ? options.threads : omp_get_num_procs();
   int setupError = kExitOk;
   const std::unique_ptr<cardiac::HeartSimulation> sim = makeSimulation(scenario, threads, options.scenario, setupError);
