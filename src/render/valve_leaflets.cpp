@@ -31,7 +31,9 @@ void addLeaflets(const ValveShape& valve, WallMesh& mesh) {
   const Vec3f e1 = (valve.first - valve.first.dot(f) * f).normalized();
   const Vec3f e2 = f.cross(e1);
   const float R = valve.radius;
-  const float phi = valve.open ? kOpenAngleDegrees * std::numbers::pi_v<float> / 180 : 0.0f;
+  // Closed, a leaflet spans the annulus's radius; open, its own length.
+  const float L = valve.open && valve.length > 0 ? valve.length : R;
+  const float phi = valve.open ? valve.openAngleDegrees * std::numbers::pi_v<float> / 180 : 0.0f;
   const float sector = 2 * std::numbers::pi_v<float> / float(valve.leaflets);
   // A point of a leaflet: theta along the annulus, s from the hinge (0) to the free edge (1).
   // The radial line at theta turns about its hinge from pointing inward (closed) toward the
@@ -41,7 +43,7 @@ void addLeaflets(const ValveShape& valve, WallMesh& mesh) {
     const Vec3f hinge = valve.centre + R * u;
     const Vec3f along = std::cos(phi) * -u + std::sin(phi) * f;
     const float dome = valve.open ? 0.0f : -kDomeRadii * R * 4 * s * (1 - s);
-    return Vec3f(hinge + R * s * along + dome * f);
+    return Vec3f(hinge + L * s * along + dome * f);
   };
   for (int leaflet = 0; leaflet < valve.leaflets; ++leaflet) {
     const float t0 = (float(leaflet) - 0.5f) * sector + kCommissureGapRadians / 2;
@@ -95,6 +97,8 @@ void addValveLeaflets(const cardiac::HeartSimulation& sim, WallMesh& mesh) {
   aortic.first = mitral.centre - aortic.centre;
   mitral.leaflets = 2, aortic.leaflets = 3;
   mitral.open = states.mitralOpen, aortic.open = states.aorticOpen;
+  if (const float hanging = float(model.flowPath.mitralLeafletLength); hanging > 0)
+    mitral.length = hanging, mitral.openAngleDegrees = 90;
   addLeaflets(mitral, mesh);
   addLeaflets(aortic, mesh);
 }

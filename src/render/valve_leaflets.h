@@ -6,7 +6,10 @@
 // timing). Closed, each leaflet lies across the orifice, the leaflets meeting at its centre
 // (slightly domed back toward where the blood pushes them from); open, each is swung
 // downstream about its hinge by kOpenAngleDegrees, so the valve becomes a funnel the blood
-// passes through. Leaflets are thin slabs (both faces lit), split between commissures.
+// passes through. A mitral valve whose leaflets the blood meets (model.mitral_leaflet_length,
+// cardiac/circulation/valves.h) is drawn as the blood meets them: open, they hang straight down
+// that far, a tube of the annulus's radius. Leaflets are thin slabs (both faces lit), split
+// between commissures.
 #include "cardiac/heart_simulation.h"
 #include "render/renderer.h"
 
@@ -24,6 +27,8 @@ struct ValveShape {
   float radius = 0;
   int leaflets = 2;
   bool open = false;
+  float length = 0;                         // hinge to free edge; 0: the annulus's radius
+  float openAngleDegrees = kOpenAngleDegrees;  // open, from the annulus's plane
 };
 
 // Adds the valve's leaflets to `mesh` as triangles (positions, normals, colours).

@@ -12,6 +12,7 @@ constexpr viz::Rgb kInk{30, 30, 40};
 constexpr viz::Rgb kArrow{20, 20, 20};
 constexpr viz::Rgb kMitral{0, 140, 60};
 constexpr viz::Rgb kAxis{120, 60, 160};
+constexpr viz::Rgb kLeaflet{200, 160, 0};
 
 std::string fixed(double value, int decimals) {
   char buffer[64];
@@ -78,7 +79,8 @@ viz::Image drawEVortexCut(const cardiac::EVortexView& view, int height, const st
       "arrows: in-plane velocity (SPH average), longest " + fixed(fastest, 2) +
           " m/s; rings: vortex cores (half-peak |vorticity|), crossed: the ring's two cores",
       "cut: the plane of the long axis and the mitral orifice's centre (three-chamber view), " +
-          fixed(g.spacing * 1e3, 1) + " mm grid"};
+          fixed(g.spacing * 1e3, 1) + " mm grid" +
+          (view.cut.leafletLength > 0 ? "; yellow: the open mitral leaflets" : "")};
   int textWidth = 0;
   for (const std::string& line : {title, figures, key[0], key[1], key[2]})
     textWidth = std::max(textWidth, viz::Image::textWidth(line, textScale));
@@ -118,6 +120,16 @@ viz::Image drawEVortexCut(const cardiac::EVortexView& view, int height, const st
     image.drawLine(x, y0, x1, y1, kAxis, 2.0 * textScale);
     image.drawMarker(x1, y1, viz::MarkerShape::Square, 3.0 * textScale, kAxis);
     image.drawText(int(x1) + 6, int(y1) - viz::Image::lineHeight(textScale), "apex (long axis)", textScale, kAxis);
+  }
+  // The open mitral leaflets where the cut crosses them: two lines down from the orifice's rim.
+  if (cut.leafletLength > 0) {
+    for (const double side : {-1.0, 1.0}) {
+      const pbd::Vec3d rim = cut.mitralCentre + side * cut.mitralRadius * cut.across;
+      const double i = g.u.dot(rim - g.origin) / g.spacing;
+      const auto [x, y0] = at(i, jMitral);
+      const auto [x1, y1] = at(i, jMitral + cut.leafletLength / g.spacing);
+      image.drawLine(x, y0, x1, y1, kLeaflet, 3.0 * textScale);
+    }
   }
   // Every core thin, the ring's two thick and named with their depth.
   for (std::size_t c = 0; c < view.cores.size(); ++c) {

@@ -65,6 +65,23 @@ TEST(ValveLeaflets, ClosedTheyCloseTheOrificeOpenTheyReachDownstream) {
   }
 }
 
+// Leaflets the blood meets (model.mitral_leaflet_length) are drawn where the blood meets them:
+// open, straight down their length at the annulus's radius.
+TEST(ValveLeaflets, HangingLeafletsAreATubeOfTheirLength) {
+  ValveShape v = unitValve(2, true);
+  v.length = 0.8f, v.openAngleDegrees = 90;
+  hs::render::WallMesh mesh;
+  addLeaflets(v, mesh);
+  const Extent e = extent(mesh, v);
+  EXPECT_NEAR(e.downstream, 0.8f, 0.02f);
+  EXPECT_GT(e.nearestToAxis, 0.5f * 0.95f);  // the annulus's radius, give or take the slab
+  ValveShape closed = v;
+  closed.open = false;
+  hs::render::WallMesh across;
+  addLeaflets(closed, across);
+  EXPECT_LT(extent(across, closed).nearestToAxis, 0.05f);  // closed, across the orifice as before
+}
+
 TEST(ValveLeaflets, TheSceneFollowsTheValvesStates) {
   hs::cardiac::Scenario scenario;  // thesis-scale heart with blood, valves by timing
   scenario.blood.enabled = true;

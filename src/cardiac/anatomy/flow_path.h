@@ -55,6 +55,9 @@ struct FlowPath {
   // farthest vertex (patient_vessels.h). The valves close these discs and the flow meter counts
   // through them.
   std::optional<Orifice> mitralValveDisc, aorticValveDisc;
+  // The open mitral valve's leaflets hang this far (m) into the cavity below its disc, as a tube
+  // of the disc's radius (valves.h); 0: none.
+  Real mitralLeafletLength = 0;
   // The vessels' shapes above their orifices (vessel_shape.h): straight but for an anatomical
   // procedural heart's atrium, sinuses and lean.
   VesselShape inflowShape, outflowShape;

@@ -64,6 +64,7 @@ constexpr double kAtriumTo = 0.85;
 constexpr double kLeanTo = 0.5;
 constexpr double kMaxLeanDeg = 40;
 constexpr double kMaxSinusInRadii = 2.5, kMaxAtriumInRadii = 3.0;
+constexpr double kMaxLeafletInLongAxes = 0.5;
 
 enum class VesselKind { Inflow, Outflow };
 
@@ -165,7 +166,8 @@ void validate(const LvGeometryParams& p) {
   }
   const std::pair<const char*, Real> shapes[] = {{"aortic_sinus_radius", p.aorticSinusRadius},
                                                  {"atrium_radius", p.atriumRadius},
-                                                 {"vessel_lean_deg", p.vesselLeanDeg}};
+                                                 {"vessel_lean_deg", p.vesselLeanDeg},
+                                                 {"mitral_leaflet_length", p.mitralLeafletLength}};
   for (const auto& [key, value] : shapes)
     if (!std::isfinite(value) || value < 0) fail(key, "must be 0 (none) or positive and finite, got " + fmt(value));
   if (p.aorticSinusRadius > 0 && !(p.aorticSinusRadius > p.aorticRadius &&
@@ -181,6 +183,12 @@ void validate(const LvGeometryParams& p) {
                               fmt(kMaxAtriumInRadii * double(p.mitralRadius)) + "] m, got " + fmt(p.atriumRadius));
   if (double(p.vesselLeanDeg) > kMaxLeanDeg)
     fail("vessel_lean_deg", "must be within [0, " + fmt(kMaxLeanDeg) + "] degrees, got " + fmt(p.vesselLeanDeg));
+  // An adult's leaflets reach a quarter of the way to the apex; past the middle they would meet
+  // the apex as the ventricle empties.
+  if (double(p.mitralLeafletLength) > kMaxLeafletInLongAxes * double(p.endoLongAxis))
+    fail("mitral_leaflet_length", "must be within [0, " + fmt(kMaxLeafletInLongAxes) + " x model.endo_long_axis] = [0, " +
+                                      fmt(kMaxLeafletInLongAxes * double(p.endoLongAxis)) + "] m, got " +
+                                      fmt(p.mitralLeafletLength));
   // The plate's lattice: one point per sqrt(3)/2 h^2 of the disc, h the smaller of the element
   // size and the gap (makeDims), counted before anything is meshed.
   const double a = double(p.endoRadius);
@@ -288,6 +296,7 @@ FlowPath flowPathOf(const LvModel& model) {
   f.plateMid = Real(0.5) * g.baseThickness;
   f.inflowShape = vesselShape(g, VesselKind::Inflow);
   f.outflowShape = vesselShape(g, VesselKind::Outflow);
+  f.mitralLeafletLength = g.mitralLeafletLength;
   return f;
 }
 

@@ -49,6 +49,9 @@ struct LvGeometryParams {
   Real aorticSinusRadius = 0;  // (m) lumen radius at the sinuses of Valsalva, > aorticRadius
   Real atriumRadius = 0;       // (m) lumen radius of the left atrium at its widest, > mitralRadius
   Real vesselLeanDeg = 0;      // (degrees) each vessel's steepest lean away from the other
+  // The open mitral valve's leaflets (flow_path.h, valves.h): how far they hang into the cavity;
+  // 0 leaves the open valve a bare disc (the thesis's model).
+  Real mitralLeafletLength = 0;  // (m)
   // Resolution in [0.25, 8]: 1 gives the thesis-like model (1,100 vertices, 3,237 tets at the
   // default sizes; the thesis's has 1,061 and 3,345);
   // the element edge length is 0.21 * endoRadius / resolution, so the number of elements grows

@@ -9,6 +9,8 @@ namespace hs::cardiac {
 LongAxisCut longAxisCut(const LvModel& model, const FlowPath& path, std::span<const pbd::Vec3> positions) {
   LongAxisCut cut;
   cut.mitralCentre = path.mitral.centre.cast<double>();
+  cut.mitralRadius = double(path.mitral.radius);
+  cut.leafletLength = double(path.mitralLeafletLength);
   // The model's y axis is the long axis (lv_model.h; a patient's wall is placed so, too).
   cut.down = -Vec3d::UnitY();
   const Vec3d origin = path.apexAxisOrigin.cast<double>();

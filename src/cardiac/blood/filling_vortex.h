@@ -47,6 +47,8 @@ struct LongAxisCut {
   Vec3d across = Vec3d::UnitX(); // in the cut, across the long axis, from the mitral orifice toward the axis
   Vec3d axisAtMitralPlane = Vec3d::Zero();  // where the long axis crosses the mitral plane
   double longAxis = 0;           // m, mitral plane to the endocardial apex
+  double mitralRadius = 0;       // m, the mitral orifice's
+  double leafletLength = 0;      // m, how far its open leaflets hang (FlowPath::mitralLeafletLength)
   [[nodiscard]] double depth(const Vec3d& x) const { return down.dot(x - mitralCentre); }
 };
 

@@ -18,8 +18,26 @@ bool gateClosedOrifice(const Orifice& orifice, const Vec3& x, Vec3& p, Real radi
   return true;
 }
 
+bool gateOpenLeaflets(const Orifice& orifice, Real length, const Vec3& x, Vec3& p, Real radius) {
+  const Real along = orifice.side(p);
+  if (along < Real(0) || along > length) return false;
+  // C = side(x) * (R - rho(p)) - r >= 0 with side(x) = +1 inside the tube, -1 outside, and rho
+  // the distance from the axis; its gradient is radial.
+  const Vec3 offAxis = (p - orifice.centre) - along * orifice.forward;
+  const Real rho = offAxis.norm();
+  const Real from = orifice.radial(x) < orifice.radius ? Real(1) : Real(-1);
+  const Real c = from * (orifice.radius - rho) - radius;
+  if (c >= Real(0) || !(rho > Real(0))) return false;
+  p += c * from * (offAxis / rho);
+  return true;
+}
+
 Valves::Valves(const FlowPath& path, ValveMode mode, bool cycleEnabled, Real bloodRadius)
-    : m_mitral(path.mitralValve()), m_aortic(path.aorticValve()), m_mode(mode), m_cycleEnabled(cycleEnabled),
+    : m_mitral(path.mitralValve()),
+      m_aortic(path.aorticValve()),
+      m_mitralLeaflets(path.mitralLeafletLength),
+      m_mode(mode),
+      m_cycleEnabled(cycleEnabled),
       m_radius(bloodRadius) {}
 
 void Valves::decide(Phase phase, const ValvePressures& lastStep) {
@@ -38,7 +56,11 @@ void Valves::decide(Phase phase, const ValvePressures& lastStep) {
 }
 
 void Valves::gate(const Vec3& x, Vec3& p) const {
-  if (!m_states.mitralOpen) gateClosedOrifice(m_mitral, x, p, m_radius);
+  if (!m_states.mitralOpen) {
+    gateClosedOrifice(m_mitral, x, p, m_radius);
+  } else if (m_mitralLeaflets > 0) {
+    gateOpenLeaflets(m_mitral, m_mitralLeaflets, x, p, m_radius);
+  }
   if (!m_states.aorticOpen) {
     gateClosedOrifice(m_aortic, x, p, m_radius);
   } else if (m_aorticOpening && m_aortic.radial(p) >= *m_aorticOpening) {
@@ -46,14 +68,18 @@ void Valves::gate(const Vec3& x, Vec3& p) const {
   }
 }
 
+bool Valves::gates() const {
+  return !m_states.mitralOpen || !m_states.aorticOpen || m_aorticOpening || m_mitralLeaflets > 0;
+}
+
 void Valves::gatePoints(const pbd::Particles& particles, std::vector<Vec3>& points,
                         std::span<const Index> ids) const {
-  if (m_states.mitralOpen && m_states.aorticOpen && !m_aorticOpening) return;
+  if (!gates()) return;
   for (std::size_t k = 0; k < ids.size(); ++k) gate(particles.position[ids[k]], points[k]);
 }
 
 void Valves::gateParticles(pbd::Particles& particles, Index first) const {
-  if (m_states.mitralOpen && m_states.aorticOpen && !m_aorticOpening) return;
+  if (!gates()) return;
   for (std::size_t i = first; i < particles.size(); ++i) gate(particles.position[i], particles.predicted[i]);
 }
 

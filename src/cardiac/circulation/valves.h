@@ -2,7 +2,10 @@
 // The mitral and aortic valves as gates. Each orifice disc (flow_path.h) is a gate. A closed
 // valve is a wall of zero thickness across the disc: a particle keeps its radius from it on
 // the side it started the step on. An open valve lets particles through both ways, so a valve
-// that closes late lets blood back (regurgitation). When valves open (ValveMode):
+// that closes late lets blood back (regurgitation). An open mitral valve with leaflets
+// (FlowPath::mitralLeafletLength) hangs them into the cavity as a tube of the annulus's radius,
+// again a wall of zero thickness: the inflow leaves it at the leaflets' tips, where its vortex
+// ring forms (Elbaz et al. 2014), not at the annulus. When valves open (ValveMode):
 //   Timing    thesis: the mitral valve is open in diastole, the aortic in systole; both open
 //             when the cycle is off.
 //   Pressure  physiological: a valve is open while the pressure just before it exceeded the
@@ -46,6 +49,12 @@ ValveStates timedValves(bool cycleEnabled, Phase phase);
 // moved.
 bool gateClosedOrifice(const Orifice& orifice, const Vec3& x, Vec3& p, Real radius);
 
+// Moves p so it keeps `radius` from open leaflets hanging `length` downstream of the orifice
+// as a tube of its radius, on the side (inside or outside the tube) x lies on; points upstream
+// of the orifice or beyond the tips are the wall's and the other gates' business. Returns true
+// if p moved.
+bool gateOpenLeaflets(const Orifice& orifice, Real length, const Vec3& x, Vec3& p, Real radius);
+
 class Valves {
  public:
   Valves(const FlowPath& path, ValveMode mode, bool cycleEnabled, Real bloodRadius);
@@ -74,11 +83,15 @@ class Valves {
   void gateParticles(pbd::Particles& particles, Index first) const;
 
  private:
-  // The closed valves' gates for a particle that started the step at x and is predicted at p.
+  // The closed valves' gates, and the open mitral valve's leaflets, for a particle that started
+  // the step at x and is predicted at p.
   void gate(const Vec3& x, Vec3& p) const;
+  // Whether this step has anything to gate (a closed valve, a stenotic ring, open leaflets).
+  [[nodiscard]] bool gates() const;
 
   Orifice m_mitral, m_aortic;
   std::optional<Real> m_aorticOpening;
+  Real m_mitralLeaflets;  // FlowPath::mitralLeafletLength
   ValveMode m_mode;
   bool m_cycleEnabled;
   Real m_radius;

@@ -90,6 +90,9 @@ std::vector<KeySpec> modelKeys() {
               "vessel)."),
       realKey("model.vessel_lean_deg", HS_FIELD(geometry.vesselLeanDeg), between(0, 40), "deg",
               "Steepest lean of each vessel away from the other over its lower half (0: vertical)."),
+      realKey("model.mitral_leaflet_length", HS_FIELD(geometry.mitralLeafletLength), between(0, 5), kMetres,
+              "How far the open mitral valve's leaflets hang into the cavity, a tube of the annulus's radius the "
+              "inflow leaves at their tips (0: none, the open valve is a bare disc)."),
       realKey("model.resolution", HS_FIELD(geometry.resolution), between(0.25, 8), "",
               "Mesh refinement: 1 = thesis-like model (1,100 vertices, 3,237 tets); elements grow ~ "
               "resolution^2."),

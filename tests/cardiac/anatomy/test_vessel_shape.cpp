@@ -269,6 +269,14 @@ TEST(VesselShape, BadSizesAreRefusedWithTheKeyAndTheReason) {
   g.atriumRadius = Real(-0.01);
   EXPECT_NE(buildError(g).find("model.atrium_radius: must be 0 (none) or positive"), std::string::npos)
       << buildError(g);
+  g = anatomicalGeometry();
+  g.mitralLeafletLength = Real(-0.01);
+  EXPECT_NE(buildError(g).find("model.mitral_leaflet_length: must be 0 (none) or positive"), std::string::npos)
+      << buildError(g);
+  g.mitralLeafletLength = g.endoLongAxis;  // leaflets reaching the apex
+  EXPECT_NE(buildError(g).find("model.mitral_leaflet_length: must be within [0, 0.5 x model.endo_long_axis]"),
+            std::string::npos)
+      << buildError(g);
   // Upright vessels with both bulges would meet above the base: refused, with where.
   g = anatomicalGeometry();
   g.vesselLeanDeg = 0;

@@ -104,6 +104,67 @@ TEST(Valves, ClosedOrificeLeavesClearPointsAndPointsBeyondItsRim) {
   EXPECT_EQ(p, beyondRim + Real(0.1) * Vec3::UnitY());
 }
 
+// Open leaflets hang as a tube of the disc's radius: a particle inside it is held inside, one
+// outside held outside, each its radius from the tube and moved across the axis only; above
+// the disc and beyond the tips nothing is held.
+TEST(Valves, OpenLeafletsHoldAParticleOnItsSideOfTheTube) {
+  const Orifice& m = path().mitral;
+  const Real length = Real(0.8), R = m.radius;
+  const Vec3 down = m.forward, across = Vec3::UnitZ();
+  ASSERT_NEAR(down.dot(across), 0, 1e-6);
+  const Vec3 level = m.centre + Real(0.4) * down;
+  {
+    const Vec3 x = level + (R - Real(0.2)) * across;  // inside
+    Vec3 p = level + (R + Real(0.1)) * across + Real(0.05) * down;
+    EXPECT_TRUE(gateOpenLeaflets(m, length, x, p, kRadius));
+    EXPECT_NEAR(m.radial(p), R - kRadius, 1e-5);
+    EXPECT_NEAR(m.side(p), Real(0.45), 1e-5);  // along the axis as predicted
+  }
+  {
+    const Vec3 x = level + (R + Real(0.2)) * across;  // outside
+    Vec3 p = level + (R - Real(0.1)) * across;
+    EXPECT_TRUE(gateOpenLeaflets(m, length, x, p, kRadius));
+    EXPECT_NEAR(m.radial(p), R + kRadius, 1e-5);
+  }
+  {
+    const Vec3 x = level;  // on the axis, well clear
+    Vec3 p = level + Real(0.1) * across;
+    EXPECT_FALSE(gateOpenLeaflets(m, length, x, p, kRadius));
+    EXPECT_EQ(p, level + Real(0.1) * across);
+  }
+  for (const Real along : {Real(-0.1), length + Real(0.05)}) {  // above the disc, beyond the tips
+    const Vec3 x = m.centre + along * down + (R - Real(0.2)) * across;
+    Vec3 p = m.centre + along * down + R * across;
+    EXPECT_FALSE(gateOpenLeaflets(m, length, x, p, kRadius));
+    EXPECT_EQ(p, m.centre + along * down + R * across);
+  }
+}
+
+// The valves hang the leaflets only while the mitral valve is open: closed, it is the disc.
+TEST(Valves, LeafletsHangOnlyFromTheOpenMitralValve) {
+  FlowPath withLeaflets = path();
+  withLeaflets.mitralLeafletLength = Real(0.8);
+  const Orifice& m = withLeaflets.mitral;
+  pbd::Particles particles;
+  const Vec3 level = m.centre + Real(0.4) * m.forward;
+  particles.add(level + (m.radius - Real(0.2)) * Vec3::UnitZ(), 1, pbd::ParticleKind::Fluid);
+  const Vec3 outward = level + m.radius * Vec3::UnitZ();
+  Valves v(withLeaflets, ValveMode::Timing, true, kRadius);
+  v.decide(Phase::Diastole, {});  // mitral open
+  particles.predicted = {outward};
+  v.gateParticles(particles, 0);
+  EXPECT_NEAR(m.radial(particles.predicted[0]), m.radius - kRadius, 1e-5);
+  v.decide(Phase::Systole, {});  // mitral closed: the disc holds, the tube is gone
+  particles.predicted = {outward};
+  v.gateParticles(particles, 0);
+  EXPECT_EQ(particles.predicted[0], outward);
+  // Without leaflets the open valve touches nothing.
+  Valves bare = valves(ValveMode::Timing);
+  bare.decide(Phase::Diastole, {});
+  bare.gateParticles(particles, 0);
+  EXPECT_EQ(particles.predicted[0], outward);
+}
+
 // A wall vertex, then three blood particles: one crossing the mitral disc downward, one
 // crossing the aortic disc upward, one in the middle of the cavity.
 struct Crossers {

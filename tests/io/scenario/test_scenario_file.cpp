@@ -201,6 +201,8 @@ std::vector<KeyCase> everyKeyCase() {
        [](const Scenario& s) { return s.geometry.aorticSinusRadius == Real(0.8); }},
       {"model.atrium_radius", "1.1", [](const Scenario& s) { return s.geometry.atriumRadius == Real(1.1); }},
       {"model.vessel_lean_deg", "30", [](const Scenario& s) { return s.geometry.vesselLeanDeg == Real(30); }},
+      {"model.mitral_leaflet_length", "0.9",
+       [](const Scenario& s) { return s.geometry.mitralLeafletLength == Real(0.9); }},
       {"model.resolution", "2", [](const Scenario& s) { return s.geometry.resolution == Real(2); }},
       {"model.kind", "\"mesh\"", [](const Scenario& s) { return s.patient.kind == cardiac::ModelKind::Mesh; }},
       {"model.endocardium", "\"lv/endo.obj\"", [](const Scenario& s) { return s.patient.endocardium == "lv/endo.obj"; }},
