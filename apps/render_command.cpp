@@ -185,6 +185,7 @@ std::string sheetFooter(const cardiac::HeartSimulation& sim, const render::Scene
   switch (scene.bloodColour) {
     case render::BloodColour::Speed:
       footer += "blood coloured by speed, blue 0 to yellow " + formatTime(scaleMax) + " m/s";
+      if (sim.lumped()) footer += ", grey = the vessels' far ends (the lumped model's boundary)";
       break;
     case render::BloodColour::Pressure:
       footer += "blood coloured by pressure, blue 0 to yellow " + formatTime(scaleMax) + " mmHg";

@@ -116,6 +116,13 @@ class HeartSimulation {
     return particle >= m_firstBloodParticle && m_particles.active(particle);
   }
 
+  // circulation.lumped: a blood particle in a vessel's far-end buffer (vessel_ends.h), the
+  // lumped model's boundary: it moves along its vessel as the lumped flows say (the outflow's
+  // plug also repays the volume it fell behind), not as the blood's own flow; false otherwise.
+  [[nodiscard]] bool bloodInVesselEnd(Index particle) const {
+    return m_ends && particle >= m_firstBloodParticle && m_ends->inBuffer(m_particles.position[particle]);
+  }
+
   // Heart only (hasHeart()).
   [[nodiscard]] Real cavityVolume() const;
   [[nodiscard]] TissueStats tissueStats() const;

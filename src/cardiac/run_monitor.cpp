@@ -204,9 +204,10 @@ void RunMonitor::observeBlood(StepSample& sample) {
   const bool atrialKick = sample.lumped && sample.lumped->atrialActivation > 0;
   m_echo->observe(sample.flowStep.aorticEcho, sample.flowStep.mitralEcho, m_last.heartPhase, sample.heartPhase,
                   atrialKick, sample.time);
+  // Not the vessels' far ends: the lumped model's boundary, drawn grey (render/scene.h).
   Real fastest = 0;
   for (std::size_t i = m_sim.firstBloodParticle(); i < particles.size(); ++i)
-    if (particles.active(i)) fastest = std::max(fastest, smoothed[i].squaredNorm());
+    if (particles.active(i) && !m_sim.bloodInVesselEnd(Index(i))) fastest = std::max(fastest, smoothed[i].squaredNorm());
   sample.smoothedSpeedMax = std::sqrt(double(fastest));
 }
 

@@ -99,7 +99,9 @@ struct StepSample {
   double bloodPush = 0;
   // Heart and blood with valves: the kinetic energy of the blood in the ventricle (J), from the
   // smoothed velocity (ventricle_blood.h), and the largest smoothed speed of any blood particle
-  // (m/s): what the viewer's and `render`'s speed colours show at their hottest.
+  // but the vessels' far ends (m/s): what the viewer's and `render`'s speed colours show at their
+  // hottest (they average over the drawn positions, this over the solve's lists: a particle the
+  // contacts threw far in the step can read faster here, blood_field.h).
   double ventricleKineticEnergy = 0;
   double smoothedSpeedMax = 0;
   [[nodiscard]] double pressure(FlowRegion region) const { return flowStep.pressure[std::size_t(region)]; }

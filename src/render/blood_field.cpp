@@ -1,27 +1,25 @@
 #include "render/blood_field.h"
 
 #include "pbd/fluid/sph_kernels.h"
+#include "pbd/fluid/velocity_field.h"
 #include "pbd/grid/neighbour_grid.h"
 
 namespace hs::render {
 
 std::vector<FieldValue> smoothField(const std::vector<pbd::Vec3>& positions, const std::vector<FieldValue>& values,
                                     pbd::Real supportRadius) {
+  // The Doppler readings' own average (pbd::shepardAverage) over lists found at these positions:
+  // equal volumes, which the Shepard denominator cancels.
   const pbd::SphKernels kernels = pbd::makeSphKernels(supportRadius);
   pbd::NeighbourGrid grid;
   grid.build(positions, supportRadius);
-  std::vector<FieldValue> smoothed(positions.size());
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    const pbd::Real self = pbd::poly6(kernels, 0);
-    FieldValue sum = values[i] * self;
-    pbd::Real weight = self;
-    grid.forEachNeighbour(pbd::Index(i), positions, supportRadius, [&](pbd::Index j, const pbd::Vec3&, pbd::Real r2) {
-      const pbd::Real w = pbd::poly6(kernels, r2);
-      sum += values[j] * w;
-      weight += w;
-    });
-    smoothed[i] = sum / weight;
-  }
+  pbd::NeighbourLists lists;
+  grid.buildNeighbourLists(positions, supportRadius, lists);
+  std::vector<pbd::Index> all(positions.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = pbd::Index(i);
+  std::vector<FieldValue> smoothed;
+  pbd::shepardAverage(positions, values, std::vector<pbd::Real>(positions.size(), pbd::Real(1)), lists, all, kernels,
+                      smoothed);
   return smoothed;
 }
 
@@ -52,6 +50,7 @@ BloodField smoothedBlood(const cardiac::HeartSimulation& sim) {
   for (std::size_t i = sim.firstBloodParticle(); i < p.size(); ++i) {
     if (!sim.bloodActive(pbd::Index(i))) continue;  // parked outside the model (circulation.h)
     field.particle.push_back(pbd::Index(i));
+    field.vesselEnd.push_back(sim.bloodInVesselEnd(pbd::Index(i)) ? 1 : 0);
     positions.push_back(p.position[i]);
     FieldValue v;
     v << p.velocity[i], i < pressure.size() ? pressure[i] : pbd::Real(0);

@@ -257,7 +257,8 @@ Scene buildScene(const cardiac::HeartSimulation& sim, const SceneOptions& option
     for (std::size_t k = 0; k < field.particle.size(); ++k) {
       switch (options.bloodColour) {
         case BloodColour::Speed:
-          scene.particles.colours.push_back(speedColour(double(field.velocity[k].norm()) / scaleMax));
+          scene.particles.colours.push_back(field.vesselEnd[k] ? kVesselEndColour
+                                                               : speedColour(double(field.velocity[k].norm()) / scaleMax));
           break;
         case BloodColour::Pressure:
           scene.particles.colours.push_back(speedColour(double(field.pressure[k]) / cardiac::kPascalPerMmHg / scaleMax));

@@ -129,6 +129,11 @@ std::optional<BloodLook> parseBloodLook(std::string_view name);
 const char* flowViewName(FlowView flow);
 std::optional<FlowView> parseFlowView(std::string_view name);
 
+// Under speed colours, the blood in the vessels' far-end buffers (HeartSimulation::
+// bloodInVesselEnd): the lumped model's boundary, whose speed is what the lumped flows (and the
+// outflow's repayment of what it fell behind) impose, not the blood's own flow. Grey.
+inline const Vec3f kVesselEndColour(0.62f, 0.62f, 0.64f);
+
 // The pale colour of the blood behind the flow lines, and its opacity.
 inline const Vec3f kFlowBackdropColour(0.93f, 0.80f, 0.80f);
 inline constexpr float kFlowBackdropOpacity = 0.35f;

@@ -7,20 +7,22 @@
 namespace hs::pbd {
 namespace {
 
-// v~_i from the sums of V_j W_ij v_j and V_j W_ij; the particle's own velocity when nothing
+// A~_i from the sums of V_j W_ij A_j and V_j W_ij; the particle's own value when nothing
 // weighs (a parked particle, volume 0, alone).
-inline Vec3 shepard(const Vec3& weighted, Real weight, const Vec3& own) {
-  return weight > Real(0) ? Vec3(weighted / weight) : own;
+template <class Value>
+inline Value shepard(const Value& weighted, Real weight, const Value& own) {
+  return weight > Real(0) ? Value(weighted / weight) : own;
 }
 
 }  // namespace
 
-void smoothVelocities(const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,
-                      const std::vector<Real>& volumes, const NeighbourLists& lists, std::span<const Index> subset,
-                      const SphKernels& kernels, std::vector<Vec3>& smoothed, int threads) {
+template <class Value>
+void shepardAverage(const std::vector<Vec3>& positions, const std::vector<Value>& values,
+                    const std::vector<Real>& volumes, const NeighbourLists& lists, std::span<const Index> subset,
+                    const SphKernels& kernels, std::vector<Value>& smoothed, int threads) {
   assert(lists.offsets.size() == positions.size() + 1);
-  assert(velocities.size() == positions.size() && volumes.size() == positions.size());
-  if (smoothed.size() < positions.size()) smoothed.resize(positions.size(), Vec3::Zero());
+  assert(values.size() == positions.size() && volumes.size() == positions.size());
+  if (smoothed.size() < positions.size()) smoothed.resize(positions.size(), Value::Zero());
   const Real selfKernel = poly6(kernels, Real(0));
   const auto count = std::ptrdiff_t(subset.size());
   // Chunks as threads free up: slots come in cell order with runs of neighbourless parked blood.
@@ -30,15 +32,28 @@ void smoothVelocities(const std::vector<Vec3>& positions, const std::vector<Vec3
     const Vec3& xi = positions[i];
     // Self term first, then the neighbours in list order (a fixed order for any thread count).
     Real weight = volumes[i] * selfKernel;
-    Vec3 weighted = weight * velocities[i];
+    Value weighted = weight * values[i];
     for (Index k = lists.offsets[i]; k < lists.offsets[i + 1]; ++k) {
       const Index j = lists.indices[k];
       const Real w = volumes[j] * poly6(kernels, (xi - positions[j]).squaredNorm());
-      weighted += w * velocities[j];
+      weighted += w * values[j];
       weight += w;
     }
-    smoothed[i] = shepard(weighted, weight, velocities[i]);
+    smoothed[i] = shepard(weighted, weight, values[i]);
   }
+}
+
+template void shepardAverage<Vec3>(const std::vector<Vec3>&, const std::vector<Vec3>&, const std::vector<Real>&,
+                                   const NeighbourLists&, std::span<const Index>, const SphKernels&,
+                                   std::vector<Vec3>&, int);
+template void shepardAverage<FieldVec4>(const std::vector<Vec3>&, const std::vector<FieldVec4>&,
+                                        const std::vector<Real>&, const NeighbourLists&, std::span<const Index>,
+                                        const SphKernels&, std::vector<FieldVec4>&, int);
+
+void smoothVelocities(const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,
+                      const std::vector<Real>& volumes, const NeighbourLists& lists, std::span<const Index> subset,
+                      const SphKernels& kernels, std::vector<Vec3>& smoothed, int threads) {
+  shepardAverage(positions, velocities, volumes, lists, subset, kernels, smoothed, threads);
 }
 
 std::vector<Vec3> smoothVelocitiesBruteForce(const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,

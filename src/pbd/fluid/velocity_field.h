@@ -24,6 +24,17 @@
 
 namespace hs::pbd {
 
+// Several channels at once (the viewer's velocity and pressure): the same Shepard average.
+using FieldVec4 = Eigen::Matrix<Real, 4, 1>;
+
+// The average itself, for any of the value types above (Vec3, FieldVec4): A~_i = sum_j V_j A_j
+// W_ij / sum_j V_j W_ij over i and its list, in the order smoothVelocities states. The one piece
+// of code behind the Doppler readings and the speed colours (render/blood_field.h).
+template <class Value>
+void shepardAverage(const std::vector<Vec3>& positions, const std::vector<Value>& values,
+                    const std::vector<Real>& volumes, const NeighbourLists& lists, std::span<const Index> subset,
+                    const SphKernels& kernels, std::vector<Value>& smoothed, int threads = 1);
+
 // v~_i for every i of `subset` (indices into positions), written to smoothed[i]; the other
 // entries of `smoothed` are left as they are (it is resized to positions.size() if smaller).
 // lists[i] are i's neighbours (within h when the lists were built; a pair farther apart now

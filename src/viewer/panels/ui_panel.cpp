@@ -343,7 +343,16 @@ OverlayBox drawColourKey(const ViewerStatus& status, float leftEdge, float botto
   } else if (status.hasBlood) {
     if (status.hasHeart && !folded) ImGui::Spacing();
     switch (render::BloodColour(status.bloodColour)) {
-      case render::BloodColour::Speed: scaleLegend("Blood speed (m/s)", status.speedMax, "m/s"); break;
+      case render::BloodColour::Speed:
+        scaleLegend("Blood speed (m/s)", status.speedMax, "m/s");
+        if (status.circulation.lumped) {
+          const render::Vec3f& grey = render::kVesselEndColour;
+          ImGui::TextColored(ImVec4(grey.x(), grey.y(), grey.z(), 1), "grey");
+          ImGui::SameLine();
+          ImGui::TextUnformatted("vessels' far ends");
+          tooltip("The lumped model's boundary: the blood there moves as its flows say, not as the blood flows");
+        }
+        break;
       case render::BloodColour::Pressure:
         scaleLegend("Blood pressure (mmHg)", status.pressureMax, "mmHg");
         break;
