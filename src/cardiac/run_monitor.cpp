@@ -207,7 +207,8 @@ void RunMonitor::observeBlood(StepSample& sample) {
   // Not the vessels' far ends: the lumped model's boundary, drawn grey (render/scene.h).
   Real fastest = 0;
   for (std::size_t i = m_sim.firstBloodParticle(); i < particles.size(); ++i)
-    if (particles.active(i) && !m_sim.bloodInVesselEnd(Index(i))) fastest = std::max(fastest, smoothed[i].squaredNorm());
+    if (const Real s2 = smoothed[i].squaredNorm(); s2 > fastest && particles.active(i) && !m_sim.bloodInVesselEnd(Index(i)))
+      fastest = s2;
   sample.smoothedSpeedMax = std::sqrt(double(fastest));
 }
 

@@ -188,7 +188,7 @@ void FluidSolver::smoothedVelocities(const Particles& particles, std::vector<Vec
     const Index i = m_slotParticle[k];
     if (particles.active(i) && (wanted.empty() || wanted[i])) m_smoothSubset.push_back(Index(k));
   }
-  smoothVelocities(m_smoothX, m_smoothV, m_smoothVolume, m_lists, m_smoothSubset, m_kernels, m_smoothOut, threads);
+  shepardAverage(m_smoothX, m_smoothV, m_smoothVolume, m_lists, m_smoothSubset, m_kernels, m_smoothOut, threads);
   for (const Index k : m_smoothSubset) smoothed[m_slotParticle[k]] = m_smoothOut[k];
 }
 

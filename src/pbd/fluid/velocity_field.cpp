@@ -50,12 +50,6 @@ template void shepardAverage<FieldVec4>(const std::vector<Vec3>&, const std::vec
                                         const std::vector<Real>&, const NeighbourLists&, std::span<const Index>,
                                         const SphKernels&, std::vector<FieldVec4>&, int);
 
-void smoothVelocities(const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,
-                      const std::vector<Real>& volumes, const NeighbourLists& lists, std::span<const Index> subset,
-                      const SphKernels& kernels, std::vector<Vec3>& smoothed, int threads) {
-  shepardAverage(positions, velocities, volumes, lists, subset, kernels, smoothed, threads);
-}
-
 std::vector<Vec3> smoothVelocitiesBruteForce(const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,
                                              const std::vector<Real>& volumes, const SphKernels& kernels) {
   std::vector<Vec3> smoothed(positions.size());

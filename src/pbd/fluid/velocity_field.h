@@ -27,22 +27,18 @@ namespace hs::pbd {
 // Several channels at once (the viewer's velocity and pressure): the same Shepard average.
 using FieldVec4 = Eigen::Matrix<Real, 4, 1>;
 
-// The average itself, for any of the value types above (Vec3, FieldVec4): A~_i = sum_j V_j A_j
-// W_ij / sum_j V_j W_ij over i and its list, in the order smoothVelocities states. The one piece
-// of code behind the Doppler readings and the speed colours (render/blood_field.h).
+// A~_i = sum_j V_j A_j W_ij / sum_j V_j W_ij for every i of `subset` (indices into positions),
+// for any value type (Vec3: the velocity v~; FieldVec4: the viewer's velocity and pressure),
+// written to smoothed[i]; the other entries of `smoothed` are left as they are (it is resized to
+// positions.size() if smaller). lists[i] are i's neighbours (within h when the lists were built;
+// a pair farther apart now adds nothing, W = 0 beyond h). A particle whose weights sum to 0 (its
+// own volume 0 and no neighbour with a volume) keeps its own value. The one piece of code behind
+// the Doppler readings (FluidSolver::smoothedVelocities) and the speed colours
+// (render/blood_field.h).
 template <class Value>
 void shepardAverage(const std::vector<Vec3>& positions, const std::vector<Value>& values,
                     const std::vector<Real>& volumes, const NeighbourLists& lists, std::span<const Index> subset,
                     const SphKernels& kernels, std::vector<Value>& smoothed, int threads = 1);
-
-// v~_i for every i of `subset` (indices into positions), written to smoothed[i]; the other
-// entries of `smoothed` are left as they are (it is resized to positions.size() if smaller).
-// lists[i] are i's neighbours (within h when the lists were built; a pair farther apart now
-// adds nothing, W = 0 beyond h). A particle whose weights sum to 0 (its own volume 0 and no
-// neighbour with a volume) keeps its own velocity.
-void smoothVelocities(const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,
-                      const std::vector<Real>& volumes, const NeighbourLists& lists, std::span<const Index> subset,
-                      const SphKernels& kernels, std::vector<Vec3>& smoothed, int threads = 1);
 
 // The same by testing every pair: the reference the lists are checked against.
 std::vector<Vec3> smoothVelocitiesBruteForce(const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,

@@ -60,7 +60,7 @@ std::vector<Index> allOf(std::size_t n) {
 std::vector<Vec3> smooth(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const std::vector<Real>& volume,
                          int threads = 1) {
   std::vector<Vec3> out;
-  smoothVelocities(x, v, volume, listsFor(x, threads), allOf(x.size()), makeSphKernels(kSupport), out, threads);
+  shepardAverage(x, v, volume, listsFor(x, threads), allOf(x.size()), makeSphKernels(kSupport), out, threads);
   return out;
 }
 
